@@ -1,0 +1,21 @@
+// The subcommands: each registers itself on the CLI11 app and sets the exit status.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace ncv::cmd {
+
+// Exit statuses shared by every subcommand.
+inline constexpr int kExitSuccess = 0;
+inline constexpr int kExitOutOfTolerance = 1;
+inline constexpr int kExitBadInput = 2;
+
+// Each command writes its result status here (0 unless it says otherwise).
+struct CommandContext {
+  int exit_status = kExitSuccess;
+};
+
+void add_sample_command(CLI::App& app, CommandContext& context);
+void add_inspect_command(CLI::App& app, CommandContext& context);
+
+}  // namespace ncv::cmd

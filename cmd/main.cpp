@@ -1,0 +1,47 @@
+// ncverify: NC machining verification by exact signed distances (see README.md).
+#include <spdlog/spdlog.h>
+
+#include <exception>
+
+#include "commands.hpp"
+#include "error.hpp"
+#include "logging.hpp"
+#include "output_file.hpp"
+
+int main(int argc, char** argv) {
+  using namespace ncv;
+  install_output_cleanup_on_signals();
+
+  CLI::App app{"ncverify: measures how far a machined workpiece mesh is from its nominal part"};
+  app.require_subcommand(1);
+  app.fallthrough();
+  app.set_version_flag("--version", "ncverify " NCV_VERSION);
+  bool quiet = false, verbose = false;
+  app.add_flag("-q,--quiet", quiet, "Only warnings and errors on standard error");
+  app.add_flag("-v,--verbose", verbose, "More detail on standard error");
+
+  cmd::CommandContext context;
+  cmd::add_sample_command(app, context);
+  cmd::add_inspect_command(app, context);
+
+  // Logging must be set up before any subcommand callback runs.
+  app.parse_complete_callback([&] {
+    setup_logging(quiet ? Verbosity::quiet : (verbose ? Verbosity::verbose : Verbosity::normal));
+  });
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int status = app.exit(e);
+    return status == 0 ? 0 : cmd::kExitBadInput;
+  } catch (const InputError& e) {
+    spdlog::error("{}", e.what());
+    return cmd::kExitBadInput;
+  } catch (const UsageError& e) {
+    spdlog::error("{}", e.what());
+    return cmd::kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    spdlog::error("out of memory");
+    return cmd::kExitBadInput;
+  }
+  return context.exit_status;
+}

@@ -1,0 +1,16 @@
+// Refuses work whose memory would not fit the machine, before allocating it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace ncv {
+
+std::uint64_t physical_memory_bytes();
+std::string format_bytes(std::uint64_t bytes);  // "1.5 GB"
+
+// Throws UsageError (what it would take, how much memory, the way out) when `bytes`
+// exceeds half the physical memory, unless forced.
+void check_memory_budget(const std::string& what, double bytes, bool force);
+
+}  // namespace ncv

@@ -1,0 +1,176 @@
+#include "mesh_reader.hpp"
+
+#include <fmt/format.h>
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+
+#include <algorithm>
+#include <cstring>
+#include <sstream>
+#include <string_view>
+
+#include "error.hpp"
+#include "input_bytes.hpp"
+#include "stl_reader.hpp"
+
+namespace ncv {
+namespace {
+
+struct DoublePointTraits : public OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+};
+using OpenMeshPolyMesh = OpenMesh::PolyMesh_ArrayKernelT<DoublePointTraits>;
+
+std::string_view leading_text(std::span<const char> bytes, std::size_t length) {
+  return {bytes.data(), std::min(length, bytes.size())};
+}
+
+bool starts_with(std::span<const char> bytes, std::string_view prefix) {
+  return leading_text(bytes, prefix.size()) == prefix;
+}
+
+bool is_text(std::span<const char> bytes) {
+  const std::size_t probe = std::min<std::size_t>(bytes.size(), 4096);
+  return std::none_of(
+      bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(probe), [](char c) {
+        const auto u = static_cast<unsigned char>(c);
+        return u == 0 || (u < 32 && u != '\n' && u != '\r' && u != '\t' && u != '\f' && u != '\v');
+      });
+}
+
+bool looks_like_off(std::span<const char> bytes) {
+  std::string_view head = leading_text(bytes, 16);
+  head.remove_prefix(std::min(head.find_first_not_of(" \t\r\n"), head.size()));
+  for (std::string_view tag : {"OFF", "COFF", "NOFF", "CNOFF", "STOFF", "4OFF", "nOFF"}) {
+    if (head.substr(0, tag.size()) == tag) return true;
+  }
+  return false;
+}
+
+bool looks_like_obj(std::span<const char> bytes) {
+  if (!is_text(bytes)) return false;
+  const std::string_view text(bytes.data(), bytes.size());
+  return (text.starts_with("v ") || text.find("\nv ") != std::string_view::npos) &&
+         (text.find("\nf ") != std::string_view::npos);
+}
+
+// Recognisable non-mesh files get a precise message instead of a parse error.
+std::string known_non_mesh(std::span<const char> bytes) {
+  if (starts_with(bytes, "\x89PNG")) return "a PNG image";
+  if (starts_with(bytes, "\xFF\xD8\xFF")) return "a JPEG image";
+  if (starts_with(bytes, "%PDF")) return "a PDF document";
+  if (starts_with(bytes, "PK\x03\x04")) return "a ZIP archive";
+  if (starts_with(bytes, "\x1F\x8B")) return "a gzip archive";
+  if (starts_with(bytes, "NCVERIFY")) return "an ncverify intermediate file";
+  return {};
+}
+
+Mesh read_with_openmesh(std::span<const char> bytes, const std::string& source,
+                        const std::string& extension) {
+  // OpenMesh prints parse complaints on its own streams; our message is the error.
+  ::omerr().disable();
+  ::omlog().disable();
+  ::omout().disable();
+  std::istringstream stream(std::string(bytes.data(), bytes.size()));
+  OpenMeshPolyMesh om;
+  OpenMesh::IO::Options options = OpenMesh::IO::Options::Default;
+  if (extension == ".ply" && !is_text(bytes)) options += OpenMesh::IO::Options::Binary;
+  if (!OpenMesh::IO::read_mesh(om, stream, extension, options)) {
+    throw InputError(source, fmt::format("could not be parsed as {} (malformed or truncated)",
+                                         extension.substr(1)));
+  }
+  Mesh mesh;
+  mesh.vertices.reserve(om.n_vertices());
+  for (const auto vh : om.vertices()) {
+    const auto& p = om.point(vh);
+    mesh.vertices.push_back({p[0], p[1], p[2]});
+  }
+  for (const auto fh : om.faces()) {
+    std::vector<std::uint32_t> corners;
+    for (const auto vh : om.fv_range(fh)) corners.push_back(static_cast<std::uint32_t>(vh.idx()));
+    for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
+      mesh.triangles.push_back({corners[0], corners[k], corners[k + 1]});
+    }
+  }
+  return mesh;
+}
+
+Mesh parse_by_content(std::span<const char> bytes, const std::string& source,
+                      MeshReadReport& report) {
+  if (bytes.empty()) throw InputError(source, "empty file, expected a mesh");
+  if (looks_like_binary_stl(bytes)) {
+    report.format = MeshFormat::stl_binary;
+    return parse_binary_stl(bytes, source);
+  }
+  if (const std::string what = known_non_mesh(bytes); !what.empty()) {
+    throw InputError(source, "is " + what + ", not a mesh (STL, PLY, OBJ or OFF)");
+  }
+  if (looks_like_ascii_stl(bytes) && is_text(bytes)) {
+    report.format = MeshFormat::stl_ascii;
+    return parse_ascii_stl(bytes, source);
+  }
+  if (starts_with(bytes, "ply")) {
+    report.format = MeshFormat::ply;
+    return read_with_openmesh(bytes, source, ".ply");
+  }
+  if (looks_like_off(bytes)) {
+    report.format = MeshFormat::off;
+    return read_with_openmesh(bytes, source, ".off");
+  }
+  if (looks_like_obj(bytes)) {
+    report.format = MeshFormat::obj;
+    return read_with_openmesh(bytes, source, ".obj");
+  }
+  if (!is_text(bytes) && bytes.size() >= 84) {
+    report.format = MeshFormat::stl_binary;
+    return parse_binary_stl(bytes, source);  // reports the size mismatch precisely
+  }
+  throw InputError(source, "not a mesh file: not recognised as STL, PLY, OBJ or OFF");
+}
+
+void check_mesh(const Mesh& mesh, const std::string& source) {
+  if (mesh.triangles.empty()) throw InputError(source, "the mesh has no triangles");
+  for (const Vec3& p : mesh.vertices) {
+    if (!is_finite(p)) throw InputError(source, "a vertex has a NaN or infinite coordinate");
+  }
+  if (mesh.triangles.size() > std::numeric_limits<std::uint32_t>::max() / 2) {
+    throw InputError(source, "too many triangles (more than 2^31)");
+  }
+}
+
+}  // namespace
+
+std::string format_name(MeshFormat format) {
+  switch (format) {
+    case MeshFormat::stl_binary:
+      return "binary STL";
+    case MeshFormat::stl_ascii:
+      return "ASCII STL";
+    case MeshFormat::ply:
+      return "PLY";
+    case MeshFormat::obj:
+      return "OBJ";
+    case MeshFormat::off:
+      return "OFF";
+  }
+  return "unknown";
+}
+
+Mesh parse_mesh(std::span<const char> bytes, const std::string& source, MeshReadReport* report) {
+  MeshReadReport local;
+  MeshReadReport& r = report ? *report : local;
+  r = {};
+  Mesh mesh = parse_by_content(bytes, source, r);
+  check_mesh(mesh, source);
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    if (squared_norm(area_vector(mesh, t)) == 0) ++r.degenerate_triangles;
+  }
+  return mesh;
+}
+
+Mesh read_mesh(const std::string& path, MeshReadReport* report) {
+  const std::vector<char> bytes = read_input_bytes(path);
+  return parse_mesh(bytes, input_name(path), report);
+}
+
+}  // namespace ncv

@@ -1,0 +1,27 @@
+// The samples file (kind SMPL): the welded workpiece and its lattice samples, everything the
+// later steps need. Layout in docs/FORMATS.md. The distance file embeds the same sections.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "container.hpp"
+#include "sampling.hpp"
+
+namespace ncv {
+
+inline constexpr std::uint32_t kSamplesFormatVersion = 1;
+
+std::string scheme_name(SamplingScheme scheme);  // "all" or "paper-ii"
+
+// Metadata describing the sample set (workpiece, sampling parameters, counts).
+nlohmann::json sample_set_meta(const SampleSet& set, const std::string& workpiece_source);
+// Adds the workpiece and sample sections; `set` must outlive the writer.
+void add_sample_sections(ContainerWriter& writer, const SampleSet& set);
+// Loads and fully validates (indices, lattice bookkeeping, mesh hash) the sample sections.
+SampleSet load_sample_set(const Container& container);
+
+void write_samples_file(const SampleSet& set, const std::string& workpiece_source, OutputFile& out);
+SampleSet read_samples_file(const std::string& path);
+
+}  // namespace ncv

@@ -1,0 +1,166 @@
+#include "sampling.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+
+namespace ncv {
+namespace {
+
+// Lattice size a triangle gets under the scheme: scheme I lifts n < 2 to 2 (corners only),
+// scheme II leaves it unsampled (0).
+std::uint32_t scheme_lattice_size(double area, double step, SamplingScheme scheme) {
+  const std::uint32_t n = lattice_size(area, step);
+  if (n >= 2) return n;
+  return scheme == SamplingScheme::all ? 2u : 0u;
+}
+
+std::vector<std::uint32_t> lattice_sizes(const Mesh& mesh, double step, SamplingScheme scheme) {
+  std::vector<std::uint32_t> sizes(mesh.triangle_count());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sizes.size(), 4096), [&](const auto& r) {
+    for (std::size_t t = r.begin(); t != r.end(); ++t) {
+      sizes[t] = scheme_lattice_size(triangle_area(mesh, t), step, scheme);
+    }
+  });
+  return sizes;
+}
+
+// Lattice coordinates of corner k of a size-n lattice: A = (0,0), B = (n-1,0), C = (0,n-1).
+std::pair<std::uint32_t, std::uint32_t> corner_lattice_coordinates(int k, std::uint32_t n) {
+  if (k == 1) return {n - 1, 0};
+  if (k == 2) return {0, n - 1};
+  return {0, 0};
+}
+
+// Numbers the mesh vertices that belong to a sampled triangle: they are samples
+// 0 .. count-1, each owned by its lowest-index sampled triangle.
+std::uint32_t assign_vertex_samples(SampleSet& set) {
+  const Mesh& mesh = set.workpiece;
+  set.vertex_sample.assign(mesh.vertex_count(), kNoSample);
+  std::vector<std::uint32_t> owner_of_vertex(mesh.vertex_count(), kNoSample);
+  std::vector<int> corner_of_vertex(mesh.vertex_count(), 0);
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    if (set.tri_n[t] == 0) continue;
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t v = mesh.triangles[t][k];
+      if (owner_of_vertex[v] != kNoSample) continue;
+      owner_of_vertex[v] = static_cast<std::uint32_t>(t);
+      corner_of_vertex[v] = k;
+    }
+  }
+  std::uint32_t count = 0;
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    if (owner_of_vertex[v] == kNoSample) continue;
+    set.vertex_sample[v] = count++;
+    const std::uint32_t t = owner_of_vertex[v];
+    const auto [i, j] = corner_lattice_coordinates(corner_of_vertex[v], set.tri_n[t]);
+    set.positions.push_back(mesh.vertices[v]);
+    set.owner.push_back(t);
+    set.lattice_i.push_back(i);
+    set.lattice_j.push_back(j);
+  }
+  return count;
+}
+
+bool is_corner(std::uint32_t i, std::uint32_t j, std::uint32_t n) {
+  return (i == 0 && j == 0) || (i == n - 1 && j == 0) || (i == 0 && j == n - 1);
+}
+
+// Writes the non-corner lattice points of triangle t from tri_first[t] on, in row-major order.
+void fill_triangle_samples(SampleSet& set, std::size_t t) {
+  const std::uint32_t n = set.tri_n[t];
+  if (n < 3) return;
+  const Mesh& mesh = set.workpiece;
+  const Vec3 a = mesh.corner(t, 0);
+  const double steps = n - 1;
+  const Vec3 e1 = (mesh.corner(t, 1) - a) / steps;
+  const Vec3 e2 = (mesh.corner(t, 2) - a) / steps;
+  std::uint64_t s = set.tri_first[t];
+  for (std::uint32_t i = 0; i < n; ++i) {
+    for (std::uint32_t j = 0; j + i < n; ++j) {
+      if (is_corner(i, j, n)) continue;
+      set.positions[s] = a + static_cast<double>(i) * e1 + static_cast<double>(j) * e2;
+      set.owner[s] = static_cast<std::uint32_t>(t);
+      set.lattice_i[s] = i;
+      set.lattice_j[s] = j;
+      ++s;
+    }
+  }
+}
+
+}  // namespace
+
+std::uint32_t lattice_size(double area, double step) {
+  const double n_prime = std::sqrt(0.25 + 2.0 * area / (step * step)) - 0.5;
+  // Caps keep the conversion defined; the sample-count guard refuses such steps anyway.
+  if (!(n_prime < 2.0e9)) return 2'000'000'000u;
+  return static_cast<std::uint32_t>(std::lround(n_prime));
+}
+
+std::uint64_t SampleSet::sample_at(std::size_t t, std::uint32_t i, std::uint32_t j) const {
+  const std::uint64_t n = tri_n[t];
+  if (i == 0 && j == 0) return vertex_sample[workpiece.triangles[t][0]];
+  if (i == n - 1 && j == 0) return vertex_sample[workpiece.triangles[t][1]];
+  if (i == 0 && j == n - 1) return vertex_sample[workpiece.triangles[t][2]];
+  // Row-major rank of (i, j) minus the corners that precede it: (0,0) always, and
+  // (0,n-1) once past row 0.
+  const std::uint64_t rank = i * n - i * (i - 1) / 2 + j;
+  return tri_first[t] + rank - (i == 0 ? 1 : 2);
+}
+
+std::uint64_t predicted_sample_count(const Mesh& mesh, double step, SamplingScheme scheme) {
+  std::vector<bool> vertex_used(mesh.vertex_count(), false);
+  std::uint64_t count = 0;
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    const std::uint32_t n = scheme_lattice_size(triangle_area(mesh, t), step, scheme);
+    if (n == 0) continue;
+    count += lattice_interior_count(n);
+    for (std::uint32_t v : mesh.triangles[t]) {
+      if (!vertex_used[v]) ++count;
+      vertex_used[v] = true;
+    }
+  }
+  return count;
+}
+
+SampleSet sample_mesh(Mesh workpiece, double step, SamplingScheme scheme, SamplingReport* report) {
+  SampleSet set;
+  set.workpiece = std::move(workpiece);
+  set.step = step;
+  set.scheme = scheme;
+  set.workpiece_hash = mesh_hash(set.workpiece);
+  set.tri_n = lattice_sizes(set.workpiece, step, scheme);
+
+  const std::uint32_t vertex_samples = assign_vertex_samples(set);
+  set.tri_first.resize(set.tri_n.size());
+  std::uint64_t next = vertex_samples;
+  for (std::size_t t = 0; t < set.tri_n.size(); ++t) {
+    set.tri_first[t] = next;
+    next += lattice_interior_count(set.tri_n[t]);
+  }
+  set.positions.resize(next);
+  set.owner.resize(next);
+  set.lattice_i.resize(next);
+  set.lattice_j.resize(next);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, set.tri_n.size(), 1024), [&](const auto& r) {
+    for (std::size_t t = r.begin(); t != r.end(); ++t) {
+      fill_triangle_samples(set, t);
+    }
+  });
+
+  if (report) {
+    *report = {};
+    report->triangles = set.workpiece.triangle_count();
+    report->samples = set.sample_count();
+    for (std::size_t t = 0; t < set.tri_n.size(); ++t) {
+      const double area = triangle_area(set.workpiece, t);
+      if (lattice_size(area, step) < 2) ++report->small_triangles;
+      if (area == 0) ++report->degenerate_triangles;
+      report->surface_area += area;
+    }
+  }
+  return set;
+}
+
+}  // namespace ncv
