@@ -43,6 +43,18 @@ constexpr std::array<FileKind, 3> kAllKinds = {FileKind::samples, FileKind::grid
 
 }  // namespace
 
+std::uint32_t format_version(FileKind kind) {
+  switch (kind) {
+    case FileKind::samples:
+      return kSamplesFormatVersion;
+    case FileKind::grid:
+      return kGridFormatVersion;
+    case FileKind::distances:
+      return kDistancesFormatVersion;
+  }
+  return 0;
+}
+
 std::string kind_tag(FileKind kind) {
   switch (kind) {
     case FileKind::samples:
@@ -160,8 +172,7 @@ Container Container::read_any(const std::string& path) {
       if (std::memcmp(bytes.data() + 8, kind_tag(candidate).data(), 4) == 0) kind = candidate;
     }
   }
-  const std::uint32_t version = bytes.size() >= 16 ? load<std::uint32_t>(bytes.data() + 12) : 0;
-  return parse(std::move(bytes), input_name(path), kind, version);
+  return parse(std::move(bytes), input_name(path), kind, format_version(kind));
 }
 
 Container Container::parse(std::vector<char> bytes, const std::string& source, FileKind kind,

@@ -29,6 +29,12 @@ namespace ncv {
 
 enum class FileKind { samples, grid, distances };
 
+// The format version this build writes and reads, per kind.
+inline constexpr std::uint32_t kSamplesFormatVersion = 1;
+inline constexpr std::uint32_t kGridFormatVersion = 1;
+inline constexpr std::uint32_t kDistancesFormatVersion = 1;
+std::uint32_t format_version(FileKind kind);
+
 std::string kind_tag(FileKind kind);          // "SMPL", ...
 std::string kind_description(FileKind kind);  // "samples file", ...
 
@@ -83,7 +89,7 @@ class Container {
   static Container parse(std::vector<char> bytes, const std::string& source, FileKind kind,
                          std::uint32_t version);
   static Container read(const std::string& path, FileKind kind, std::uint32_t version);
-  // Reads any kind (for inspect).
+  // Reads any kind, in its current version (for inspect).
   static Container read_any(const std::string& path);
 
   FileKind kind() const { return kind_; }

@@ -4,34 +4,10 @@
 
 #include <cmath>
 
+#include "mesh_arrays.hpp"
+
 namespace ncv {
 namespace {
-
-static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(Triangle) == 3 * sizeof(std::uint32_t));
-
-std::span<const double> flat(const std::vector<Vec3>& points) {
-  return {reinterpret_cast<const double*>(points.data()), points.size() * 3};
-}
-
-std::span<const std::uint32_t> flat(const std::vector<Triangle>& triangles) {
-  return {reinterpret_cast<const std::uint32_t*>(triangles.data()), triangles.size() * 3};
-}
-
-std::vector<Vec3> to_points(const std::vector<double>& values) {
-  std::vector<Vec3> points(values.size() / 3);
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    points[k] = {values[3 * k], values[3 * k + 1], values[3 * k + 2]};
-  }
-  return points;
-}
-
-std::vector<Triangle> to_triangles(const std::vector<std::uint32_t>& values) {
-  std::vector<Triangle> triangles(values.size() / 3);
-  for (std::size_t k = 0; k < triangles.size(); ++k) {
-    triangles[k] = {values[3 * k], values[3 * k + 1], values[3 * k + 2]};
-  }
-  return triangles;
-}
 
 SamplingScheme parse_scheme(const std::string& name, const Container& from) {
   if (name == "all") return SamplingScheme::all;
@@ -119,12 +95,12 @@ nlohmann::json sample_set_meta(const SampleSet& set, const std::string& workpiec
 void add_sample_sections(ContainerWriter& writer, const SampleSet& set) {
   const std::uint64_t V = set.workpiece.vertex_count(), T = set.workpiece.triangle_count(),
                       S = set.sample_count();
-  writer.add<double>("workpiece_vertices", flat(set.workpiece.vertices), {V, 3});
-  writer.add<std::uint32_t>("workpiece_triangles", flat(set.workpiece.triangles), {T, 3});
+  writer.add<double>("workpiece_vertices", flat_coordinates(set.workpiece.vertices), {V, 3});
+  writer.add<std::uint32_t>("workpiece_triangles", flat_indices(set.workpiece.triangles), {T, 3});
   writer.add<std::uint32_t>("tri_n", set.tri_n, {T});
   writer.add<std::uint64_t>("tri_first", set.tri_first, {T});
   writer.add<std::uint32_t>("vertex_sample", set.vertex_sample, {V});
-  writer.add<double>("positions", flat(set.positions), {S, 3});
+  writer.add<double>("positions", flat_coordinates(set.positions), {S, 3});
   writer.add<std::uint32_t>("owner", set.owner, {S});
   writer.add<std::uint32_t>("lattice_i", set.lattice_i, {S});
   writer.add<std::uint32_t>("lattice_j", set.lattice_j, {S});

@@ -10,8 +10,6 @@
 
 namespace ncv {
 
-inline constexpr std::uint32_t kSamplesFormatVersion = 1;
-
 std::string scheme_name(SamplingScheme scheme);  // "all" or "paper-ii"
 
 // Metadata describing the sample set (workpiece, sampling parameters, counts).

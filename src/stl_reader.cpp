@@ -62,18 +62,23 @@ class AsciiStlParser {
   Mesh parse() {
     expect("solid");
     words_.skip_line();  // the solid's name
-    for (std::string_view word = words_.next(); !word.empty(); word = words_.next()) {
+    // A missing 'endsolid' is the only trace of a file cut between two facets, so it is
+    // required: a truncated part must not verify as a smaller one.
+    for (;;) {
+      const std::string_view word = words_.next();
+      if (word.empty()) fail("truncated: the file ends before 'endsolid'");
       if (word == "facet") {
         parse_facet();
-      } else if (word == "endsolid") {
-        words_.skip_line();
-        const std::string_view after = words_.next();
-        if (after.empty()) break;
-        if (after != "solid") fail(fmt::format("expected 'solid' or the end, found '{}'", after));
-        words_.skip_line();
-      } else {
+        continue;
+      }
+      if (word != "endsolid") {
         fail(fmt::format("expected 'facet' or 'endsolid', found '{}'", printable(word)));
       }
+      words_.skip_line();
+      const std::string_view after = words_.next();
+      if (after.empty()) break;
+      if (after != "solid") fail(fmt::format("expected 'solid' or the end, found '{}'", after));
+      words_.skip_line();
     }
     Mesh mesh;
     mesh.vertices = welder_.take_vertices();

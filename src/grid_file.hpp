@@ -1,0 +1,29 @@
+// The grid file (kind GRID): the nominal mesh and its background grid, self-contained so
+// `distance` needs nothing else. Layout in docs/FORMATS.md.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "container.hpp"
+#include "grid_builder.hpp"
+#include "nominal_surface.hpp"
+#include "uniform_grid.hpp"
+
+namespace ncv {
+
+// A nominal prepared for queries together with its grid, as grid-build makes it and
+// distance reads it back.
+struct NominalGrid {
+  std::unique_ptr<NominalSurface> nominal;
+  UniformGrid grid;
+  Mesh mesh;  // the nominal as read (global coordinates), what the file stores
+  std::uint64_t nominal_hash = 0;
+  std::string nominal_source;
+};
+
+void write_grid_file(const NominalGrid& grid, const GridStatistics& statistics, OutputFile& out);
+// Loads and validates (hash, indices, grid consistency) a grid file.
+NominalGrid read_grid_file(const std::string& path);
+
+}  // namespace ncv
