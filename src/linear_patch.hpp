@@ -1,0 +1,44 @@
+// A linear scalar field over one triangle: the unit of every area-weighted measure.
+// The error between lattice samples is the linear interpolant of the corner errors
+// (paper eq. 8), so integrals, distribution functions and clipped areas of the whole
+// field are sums of the closed forms below over the lattice sub-triangles.
+#pragma once
+
+#include <algorithm>
+
+namespace ncv {
+
+struct LinearPatch {
+  double area = 0;
+  double lo = 0, mid = 0, hi = 0;  // the three corner values, ascending
+};
+
+constexpr LinearPatch make_linear_patch(double area, double a, double b, double c) {
+  if (a > b) std::swap(a, b);
+  if (b > c) std::swap(b, c);
+  if (a > b) std::swap(a, b);
+  return {area, a, b, c};
+}
+
+// Integral of the field: area times the mean of the corners (paper eq. 8).
+constexpr double integral(const LinearPatch& p) {
+  return p.area * ((p.lo + p.mid + p.hi) / 3);
+}
+
+// Integral of (field - shift)^2, exact for a linear field.
+constexpr double squared_integral(const LinearPatch& p, double shift = 0) {
+  const double a = p.lo - shift, b = p.mid - shift, c = p.hi - shift;
+  return p.area / 6 * (a * a + b * b + c * c + a * b + b * c + c * a);
+}
+
+// Area where the field is <= t. The sublevel set is a corner triangle (t below the middle
+// value) or the complement of one (t above it), whose area scales with the product of the
+// two edge fractions cut off.
+double area_at_most(const LinearPatch& p, double t);
+// Area where the field is < t; differs from area_at_most only for a constant patch at t.
+double area_below(const LinearPatch& p, double t);
+inline double area_above(const LinearPatch& p, double t) {
+  return p.area - area_at_most(p, t);
+}
+
+}  // namespace ncv
