@@ -34,4 +34,18 @@ void add_step_options(CLI::App& sub, std::string& step, std::string& scheme) {
       ->capture_default_str();
 }
 
+void add_distance_options(CLI::App& sub, DistanceStepOptions& options) {
+  const std::map<std::string, SignMethod> methods = {{"auto", SignMethod::automatic},
+                                                     {"pseudonormal", SignMethod::pseudonormal},
+                                                     {"winding", SignMethod::winding},
+                                                     {"paper", SignMethod::paper}};
+  sub.add_option("--sign", options.sign,
+                 "auto: pseudonormal for a closed oriented nominal, else winding number; "
+                 "paper: the sample's own normal (the paper's rule)")
+      ->transform(CLI::CheckedTransformer(methods))
+      ->default_str("auto");
+  sub.add_flag("--brute-force", options.brute_force,
+               "Test every nominal triangle for every sample (the reference; slow)");
+}
+
 }  // namespace ncv::cmd

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "distance_step.hpp"
 #include "sampling.hpp"
 
 namespace ncv::cmd {
@@ -23,5 +24,6 @@ std::string default_output(const std::string& output, const std::string& input,
 
 void add_output_option(CLI::App& sub, std::string& output, const std::string& description);
 void add_step_options(CLI::App& sub, std::string& step, std::string& scheme);
+void add_distance_options(CLI::App& sub, DistanceStepOptions& options);
 
 }  // namespace ncv::cmd

@@ -40,8 +40,9 @@ void run_sample(const SampleOptions& options) {
   SamplingReport report;
   SampleSet set = sample_mesh(std::move(mesh), step, scheme, &report);
   set.step_spec = options.step;
+  set.workpiece_source = input_name(options.workpiece);
   OutputFile out(default_output(options.output, options.workpiece, ".samples"), OutputKind::binary);
-  write_samples_file(set, input_name(options.workpiece), out);
+  write_samples_file(set, out);
   out.commit();
 
   const double seconds =

@@ -17,5 +17,7 @@ struct CommandContext {
 
 void add_sample_command(CLI::App& app, CommandContext& context);
 void add_inspect_command(CLI::App& app, CommandContext& context);
+void add_grid_build_command(CLI::App& app, CommandContext& context);
+void add_distance_command(CLI::App& app, CommandContext& context);
 
 }  // namespace ncv::cmd

@@ -1,7 +1,10 @@
 // ncverify: NC machining verification by exact signed distances (see README.md).
 #include <spdlog/spdlog.h>
 
+#include <tbb/global_control.h>
+
 #include <exception>
+#include <memory>
 
 #include "commands.hpp"
 #include "error.hpp"
@@ -17,16 +20,28 @@ int main(int argc, char** argv) {
   app.fallthrough();
   app.set_version_flag("--version", "ncverify " NCV_VERSION);
   bool quiet = false, verbose = false;
+  int threads = 0;
+  app.add_option("-j,--threads", threads,
+                 "Worker threads (default: all cores); results do not "
+                 "depend on it")
+      ->check(CLI::NonNegativeNumber);
+  std::unique_ptr<tbb::global_control> thread_limit;
   app.add_flag("-q,--quiet", quiet, "Only warnings and errors on standard error");
   app.add_flag("-v,--verbose", verbose, "More detail on standard error");
 
   cmd::CommandContext context;
   cmd::add_sample_command(app, context);
+  cmd::add_grid_build_command(app, context);
+  cmd::add_distance_command(app, context);
   cmd::add_inspect_command(app, context);
 
   // Logging must be set up before any subcommand callback runs.
   app.parse_complete_callback([&] {
     setup_logging(quiet ? Verbosity::quiet : (verbose ? Verbosity::verbose : Verbosity::normal));
+    if (threads > 0) {
+      thread_limit = std::make_unique<tbb::global_control>(
+          tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+    }
   });
   try {
     app.parse(argc, argv);

@@ -71,11 +71,11 @@ std::string scheme_name(SamplingScheme scheme) {
   return scheme == SamplingScheme::all ? "all" : "paper-ii";
 }
 
-nlohmann::json sample_set_meta(const SampleSet& set, const std::string& workpiece_source) {
+nlohmann::json sample_set_meta(const SampleSet& set) {
   const BoundingBox box = bounding_box(set.workpiece);
   return {{"tool", "ncverify " NCV_VERSION},
           {"workpiece",
-           {{"source", workpiece_source},
+           {{"source", set.workpiece_source},
             {"hash", hash_hex(set.workpiece_hash)},
             {"vertices", set.workpiece.vertex_count()},
             {"triangles", set.workpiece.triangle_count()},
@@ -113,6 +113,8 @@ SampleSet load_sample_set(const Container& c) {
   set.workpiece.vertices = to_points(c.get<double>("workpiece_vertices", V, 3));
   set.workpiece.triangles = to_triangles(c.get<std::uint32_t>("workpiece_triangles", T, 3));
   validate_mesh(set.workpiece, c);
+  if (!c.field("/workpiece/source").is_string()) c.fail("workpiece source is malformed");
+  set.workpiece_source = c.field("/workpiece/source").get<std::string>();
   set.workpiece_hash = parse_hash_hex(c.field("/workpiece/hash").get<std::string>(), c);
   if (mesh_hash(set.workpiece) != set.workpiece_hash) c.fail("workpiece hash does not match");
   if (!c.field("/sampling/step").is_number() || !c.field("/sampling/step_spec").is_string() ||
@@ -134,10 +136,8 @@ SampleSet load_sample_set(const Container& c) {
   return set;
 }
 
-void write_samples_file(const SampleSet& set, const std::string& workpiece_source,
-                        OutputFile& out) {
-  ContainerWriter writer(FileKind::samples, kSamplesFormatVersion,
-                         sample_set_meta(set, workpiece_source));
+void write_samples_file(const SampleSet& set, OutputFile& out) {
+  ContainerWriter writer(FileKind::samples, kSamplesFormatVersion, sample_set_meta(set));
   add_sample_sections(writer, set);
   writer.write(out);
 }

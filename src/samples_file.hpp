@@ -13,13 +13,13 @@ namespace ncv {
 std::string scheme_name(SamplingScheme scheme);  // "all" or "paper-ii"
 
 // Metadata describing the sample set (workpiece, sampling parameters, counts).
-nlohmann::json sample_set_meta(const SampleSet& set, const std::string& workpiece_source);
+nlohmann::json sample_set_meta(const SampleSet& set);
 // Adds the workpiece and sample sections; `set` must outlive the writer.
 void add_sample_sections(ContainerWriter& writer, const SampleSet& set);
 // Loads and fully validates (indices, lattice bookkeeping, mesh hash) the sample sections.
 SampleSet load_sample_set(const Container& container);
 
-void write_samples_file(const SampleSet& set, const std::string& workpiece_source, OutputFile& out);
+void write_samples_file(const SampleSet& set, OutputFile& out);
 SampleSet read_samples_file(const std::string& path);
 
 }  // namespace ncv

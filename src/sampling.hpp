@@ -36,8 +36,9 @@ constexpr std::uint64_t lattice_interior_count(std::uint64_t n) {
 
 struct SampleSet {
   Mesh workpiece;
-  double step = 0;        // sampling step in model units
-  std::string step_spec;  // as the user gave it ("0.1%" or "0.05")
+  std::string workpiece_source;  // the file it came from, for reports
+  double step = 0;               // sampling step in model units
+  std::string step_spec;         // as the user gave it ("0.1%" or "0.05")
   SamplingScheme scheme = SamplingScheme::all;
   std::uint64_t workpiece_hash = 0;
 

@@ -25,13 +25,14 @@ SampleSet example_set() {
             {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {4, 5, 6}}};
   SampleSet set = sample_mesh(std::move(mesh), 0.5, SamplingScheme::paper_ii);
   set.step_spec = "0.5";
+  set.workpiece_source = "example.stl";
   return set;
 }
 
 fs::path write_example(const SampleSet& set, const std::string& name) {
   const fs::path path = scratch_dir() / name;
   OutputFile out(path.string(), OutputKind::binary);
-  write_samples_file(set, "example.stl", out);
+  write_samples_file(set, out);
   out.commit();
   return path;
 }
@@ -65,6 +66,7 @@ TEST_CASE("a samples file round-trips exactly", "[samples-file]") {
   CHECK(back.workpiece_hash == set.workpiece_hash);
   CHECK(back.step == set.step);
   CHECK(back.step_spec == "0.5");
+  CHECK(back.workpiece_source == "example.stl");
   CHECK(back.scheme == SamplingScheme::paper_ii);
   CHECK(back.tri_n == set.tri_n);
   CHECK(back.tri_first == set.tri_first);

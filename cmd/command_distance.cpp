@@ -1,0 +1,46 @@
+// ncverify distance SAMPLES GRID -o OUT.dist: exact signed distance of every sample.
+#include <spdlog/spdlog.h>
+
+#include "command_options.hpp"
+#include "commands.hpp"
+#include "distance_file.hpp"
+#include "distance_step.hpp"
+#include "grid_file.hpp"
+#include "input_bytes.hpp"
+#include "samples_file.hpp"
+
+namespace ncv::cmd {
+namespace {
+
+struct DistanceOptions {
+  std::string samples;
+  std::string grid;
+  std::string output;
+  DistanceStepOptions step;
+};
+
+void run_distance(const DistanceOptions& options) {
+  SampleSet samples = read_samples_file(options.samples);
+  const NominalGrid grid = read_grid_file(options.grid);
+  const DistanceSet result = measure_distances(std::move(samples), grid, options.step);
+  OutputFile out(default_output(options.output, options.samples, ".dist"), OutputKind::binary);
+  write_distance_file(result, out);
+  out.commit();
+  spdlog::info("wrote {}", out.display_name());
+}
+
+}  // namespace
+
+void add_distance_command(CLI::App& app, CommandContext&) {
+  auto options = std::make_shared<DistanceOptions>();
+  CLI::App* sub =
+      app.add_subcommand("distance", "Signed distance from every sample to the nominal");
+  sub->add_option("samples", options->samples, "Samples file from `sample` (- = stdin)")
+      ->required();
+  sub->add_option("grid", options->grid, "Grid file from `grid-build`")->required();
+  add_output_option(*sub, options->output, "Distance file (default: SAMPLES stem + .dist)");
+  add_distance_options(*sub, options->step);
+  sub->callback([options] { run_distance(*options); });
+}
+
+}  // namespace ncv::cmd

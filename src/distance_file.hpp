@@ -1,0 +1,36 @@
+// The distance file (kind DIST): the samples (same sections as the samples file, so it is
+// self-contained for stats and colorize) plus, per sample, the signed distance, the closest
+// nominal point and the closest nominal face. Layout in docs/FORMATS.md.
+#pragma once
+
+#include <string>
+
+#include "container.hpp"
+#include "sampling.hpp"
+#include "signed_distance.hpp"
+
+namespace ncv {
+
+// What the distance file records of the nominal it was measured against.
+struct NominalInfo {
+  std::string source;
+  std::uint64_t hash = 0;
+  std::uint64_t triangles = 0;
+  BoundingBox box;
+};
+
+struct DistanceSet {
+  SampleSet samples;
+  DistanceField field;
+  NominalInfo nominal;
+  std::string sign_method;  // the method used (never "automatic")
+  std::string search;       // "grid" or "brute-force"
+  double triangles_tested_per_sample = 0;
+};
+
+void write_distance_file(const DistanceSet& set, OutputFile& out);
+// Loads and validates a distance file: the sample sections as the samples file, distances
+// finite, closest faces within the nominal.
+DistanceSet read_distance_file(const std::string& path);
+
+}  // namespace ncv

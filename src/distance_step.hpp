@@ -1,0 +1,21 @@
+// The distance step as the commands run it: samples + grid in, a DistanceSet out, with the
+// overlap check, the progress bar and the report on the way.
+#pragma once
+
+#include "distance_file.hpp"
+#include "grid_file.hpp"
+#include "sampling.hpp"
+
+namespace ncv {
+
+struct DistanceStepOptions {
+  SignMethod sign = SignMethod::automatic;
+  bool brute_force = false;  // test every nominal triangle (the reference), no grid
+};
+
+// Warns when the workpiece and the nominal barely overlap (a wrong file or unit), then
+// measures every sample.
+DistanceSet measure_distances(SampleSet samples, const NominalGrid& grid,
+                              const DistanceStepOptions& options);
+
+}  // namespace ncv
