@@ -1,0 +1,110 @@
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+#include "ncgen/analytic_parts.hpp"
+#include "ncgen/nominal_part.hpp"
+#include "ncgen/part_size.hpp"
+#include "ncgen/workpiece.hpp"
+#include "part_files.hpp"
+
+namespace ncv::gen::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+// "semi-finishing" -> "core_semifinishing.stl"
+std::string workpiece_file(const MillingStage& stage) {
+  std::string name = stage.name;
+  name.erase(std::remove(name.begin(), name.end(), '-'), name.end());
+  return "core_" + name + ".stl";
+}
+
+nlohmann::json mould_core_set(const fs::path& out, std::uint64_t seed, double size) {
+  nlohmann::json parts = nlohmann::json::array();
+  const MouldCore part = make_mould_core(seed);
+  const NominalOptions nominal;
+  nlohmann::json json =
+      save_mesh(nominal_mesh(part, nominal), out / "core_nominal.stl", "ncgen mould core nominal");
+  json["role"] = "nominal";
+  json["chord_tolerance"] = nominal.chord_tolerance;
+  parts.push_back(json);
+  mill_part(part, size, mould_core_stages(),
+            [&](const MillingStage& stage, const MillingSimulation& simulation) {
+              nlohmann::json workpiece =
+                  save_workpiece(stage, simulation, size, out / workpiece_file(stage));
+              workpiece["role"] = "workpiece";
+              workpiece["nominal"] = "core_nominal.stl";
+              parts.push_back(workpiece);
+            });
+  return parts;
+}
+
+// Boxes with the signed deviation range a verifier must find against box_nominal.stl.
+nlohmann::json box_set(const fs::path& out) {
+  const Vec3 size{100, 60, 30};
+  const double offset = 0.1;
+  const double lift = 0.2;
+  const double radius = 1.5;
+  const double stepover = 0.625;
+  const double scallop = scallop_height(radius, stepover);
+  nlohmann::json parts = nlohmann::json::array();
+  const auto add = [&](const ncv::Mesh& mesh, const std::string& file, double min, double max,
+                       const std::string& what) {
+    nlohmann::json json = save_mesh(mesh, out / file, "ncgen " + what);
+    json["role"] = file == "box_nominal.stl" ? "nominal" : "workpiece";
+    json["nominal"] = "box_nominal.stl";
+    json["description"] = what;
+    json["expected_min_error"] = min;
+    json["expected_max_error"] = max;
+    parts.push_back(json);
+  };
+  add(box_mesh({0, 0, 0}, size), "box_nominal.stl", 0, 0, "box 100 x 60 x 30 mm");
+  add(box_mesh({-offset, -offset, -offset}, size + Vec3{offset, offset, offset}), "box_offset.stl",
+      offset, offset * std::sqrt(3.0),
+      "box with every face 0.1 mm out (errors 0.1 on faces, up to 0.1 sqrt 3 at corners)");
+  add(box_mesh({0, 0, 0}, size + Vec3{0, 0, lift}), "box_top_raised.stl", 0, lift,
+      "box with the top 0.2 mm up");
+  add(box_mesh({0, 0, 0}, size - Vec3{0, 0, lift}), "box_top_lowered.stl", -lift, 0,
+      "box with the top 0.2 mm down");
+  add(scalloped_box(size, radius, stepover, 4), "box_scallop.stl", 0, scallop,
+      "box top cut by a 1.5 mm ball at 0.625 mm stepover");
+  return parts;
+}
+
+}  // namespace
+
+void add_all_command(CLI::App& app, const GlobalOptions& global) {
+  struct Options {
+    std::string out;
+    std::string size = "small";
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = app.add_subcommand(
+      "all",
+      "The whole data set: mould core nominal and workpieces, analytic boxes, and "
+      "manifest.json describing them");
+  command->add_option("--out", options->out, "Directory to write into")->required();
+  command->add_option("--size", options->size, "Workpiece size: small, medium, large or factor")
+      ->capture_default_str();
+  command->callback([options, &global] {
+    const double size = parse_size(options->size);
+    const fs::path out = options->out;
+    fs::create_directories(out);
+    nlohmann::json parts = mould_core_set(out, global.seed, size);
+    for (const nlohmann::json& box : box_set(out)) parts.push_back(box);
+    write_json({{"generator", "ncgen"},
+                {"seed", global.seed},
+                {"size", options->size},
+                {"size_factor", size},
+                {"parts", parts}},
+               out / "manifest.json");
+  });
+}
+
+}  // namespace ncv::gen::app
