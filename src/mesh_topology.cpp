@@ -1,0 +1,176 @@
+#include "mesh_topology.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace ncv {
+namespace {
+
+bool repeats_vertex(const Triangle& t) {
+  return t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
+}
+
+std::uint32_t slot_start(const Mesh& mesh, std::uint32_t slot) {
+  return mesh.triangles[slot / 3][slot % 3];
+}
+std::uint32_t slot_end(const Mesh& mesh, std::uint32_t slot) {
+  return mesh.triangles[slot / 3][(slot % 3 + 1) % 3];
+}
+std::uint32_t slot_low(const Mesh& mesh, std::uint32_t slot) {
+  return std::min(slot_start(mesh, slot), slot_end(mesh, slot));
+}
+std::uint32_t slot_high(const Mesh& mesh, std::uint32_t slot) {
+  return std::max(slot_start(mesh, slot), slot_end(mesh, slot));
+}
+
+// Slots of usable triangles, bucketed by lower vertex (counting sort keeps slot order).
+std::vector<std::uint32_t> slots_by_low_vertex(const Mesh& mesh,
+                                               std::vector<std::uint32_t>& bucket_begin) {
+  bucket_begin.assign(mesh.vertex_count() + 1, 0);
+  const auto slot_total = static_cast<std::uint32_t>(3 * mesh.triangle_count());
+  for (std::uint32_t s = 0; s < slot_total; ++s) {
+    if (!repeats_vertex(mesh.triangles[s / 3])) ++bucket_begin[slot_low(mesh, s) + 1];
+  }
+  std::partial_sum(bucket_begin.begin(), bucket_begin.end(), bucket_begin.begin());
+  std::vector<std::uint32_t> cursor(bucket_begin.begin(), bucket_begin.end() - 1);
+  std::vector<std::uint32_t> slots(bucket_begin.back());
+  for (std::uint32_t s = 0; s < slot_total; ++s) {
+    if (!repeats_vertex(mesh.triangles[s / 3])) slots[cursor[slot_low(mesh, s)]++] = s;
+  }
+  return slots;
+}
+
+struct CornerForest {
+  std::vector<std::uint32_t> parent;
+
+  std::uint32_t find(std::uint32_t c) {
+    while (parent[c] != c) c = parent[c] = parent[parent[c]];
+    return c;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+std::uint32_t start_corner(std::uint32_t slot) {
+  return slot;
+}
+std::uint32_t end_corner(std::uint32_t slot) {
+  return slot / 3 * 3 + (slot % 3 + 1) % 3;
+}
+
+// A vertex is non-manifold when its triangles form more than one fan, fans being joined
+// across the two-triangle edges around it: corners are united across each such edge and
+// every vertex counts its distinct roots.
+std::uint64_t count_non_manifold_vertices(const Mesh& mesh, const EdgeIncidence& incidence) {
+  CornerForest forest;
+  forest.parent.resize(3 * mesh.triangle_count());
+  std::iota(forest.parent.begin(), forest.parent.end(), 0u);
+  for (std::size_t e = 0; e < incidence.edge_count(); ++e) {
+    if (incidence.slot_count(e) != 2) continue;
+    const std::uint32_t s1 = incidence.slots[incidence.edge_begin[e]];
+    const std::uint32_t s2 = incidence.slots[incidence.edge_begin[e] + 1];
+    const bool same_direction = slot_start(mesh, s1) == slot_start(mesh, s2);
+    forest.unite(start_corner(s1), same_direction ? start_corner(s2) : end_corner(s2));
+    forest.unite(end_corner(s1), same_direction ? end_corner(s2) : start_corner(s2));
+  }
+  std::vector<std::uint8_t> fans(mesh.vertex_count(), 0);
+  std::uint64_t non_manifold = 0;
+  for (std::uint32_t c = 0; c < forest.parent.size(); ++c) {
+    if (repeats_vertex(mesh.triangles[c / 3]) || forest.find(c) != c) continue;
+    std::uint8_t& count = fans[mesh.triangles[c / 3][c % 3]];
+    if (count == 1) ++non_manifold;
+    count = static_cast<std::uint8_t>(std::min(count + 1, 2));
+  }
+  return non_manifold;
+}
+
+void count_edge_kinds(const Mesh& mesh, const EdgeIncidence& incidence, TopologyReport& report) {
+  report.edges = incidence.edge_count();
+  for (std::size_t e = 0; e < incidence.edge_count(); ++e) {
+    const std::uint32_t count = incidence.slot_count(e);
+    if (count == 1) ++report.boundary_edges;
+    if (count > 2) ++report.non_manifold_edges;
+    std::uint32_t forward = 0;
+    for (std::uint32_t i = incidence.edge_begin[e]; i < incidence.edge_begin[e + 1]; ++i) {
+      const std::uint32_t s = incidence.slots[i];
+      if (slot_start(mesh, s) < slot_end(mesh, s)) ++forward;
+    }
+    if (count >= 2 && 2 * forward != count) ++report.misoriented_edges;
+  }
+}
+
+std::uint64_t count_duplicates(const Mesh& mesh) {
+  std::vector<Triangle> sorted(mesh.triangles);
+  for (Triangle& t : sorted) std::sort(t.begin(), t.end());
+  std::sort(sorted.begin(), sorted.end());
+  std::uint64_t duplicates = 0;
+  for (std::size_t i = 1; i < sorted.size(); ++i) duplicates += sorted[i] == sorted[i - 1];
+  return duplicates;
+}
+
+// Relative to the bounding-box centre, so a part far from the origin loses no digits.
+double signed_volume(const Mesh& mesh) {
+  const Vec3 centre = bounding_box(mesh).center();
+  double six_volume = 0;
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    const Vec3 a = mesh.corner(t, 0) - centre;
+    six_volume += dot(a, cross(mesh.corner(t, 1) - centre, mesh.corner(t, 2) - centre));
+  }
+  return six_volume / 6;
+}
+
+}  // namespace
+
+bool is_degenerate_triangle(Vec3 a, Vec3 b, Vec3 c) {
+  const double longest_sq =
+      std::max({squared_norm(b - a), squared_norm(c - b), squared_norm(a - c)});
+  return norm(cross(b - a, c - a)) <= 1e-10 * longest_sq;
+}
+
+EdgeIncidence build_edge_incidence(const Mesh& mesh) {
+  std::vector<std::uint32_t> bucket_begin;
+  std::vector<std::uint32_t> slots = slots_by_low_vertex(mesh, bucket_begin);
+  const auto by_high_vertex = [&](std::uint32_t a, std::uint32_t b) {
+    const std::uint32_t ha = slot_high(mesh, a);
+    const std::uint32_t hb = slot_high(mesh, b);
+    return ha != hb ? ha < hb : a < b;
+  };
+  EdgeIncidence incidence;
+  incidence.edge_of_slot.assign(3 * mesh.triangle_count(), kNoEdge);
+  incidence.edge_begin.push_back(0);
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    const auto begin = slots.begin() + bucket_begin[v];
+    const auto end = slots.begin() + bucket_begin[v + 1];
+    std::sort(begin, end, by_high_vertex);
+    for (auto it = begin; it != end; ++it) {
+      if (it != begin && slot_high(mesh, *it) != slot_high(mesh, *(it - 1))) {
+        incidence.edge_begin.push_back(static_cast<std::uint32_t>(it - slots.begin()));
+      }
+      incidence.edge_of_slot[*it] = static_cast<std::uint32_t>(incidence.edge_begin.size() - 1);
+    }
+    if (begin != end)
+      incidence.edge_begin.push_back(static_cast<std::uint32_t>(end - slots.begin()));
+  }
+  incidence.slots = std::move(slots);
+  return incidence;
+}
+
+TopologyReport analyse_topology(const Mesh& mesh, const EdgeIncidence& incidence) {
+  TopologyReport report;
+  report.triangles = mesh.triangle_count();
+  count_edge_kinds(mesh, incidence, report);
+  report.non_manifold_vertices = count_non_manifold_vertices(mesh, incidence);
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    report.degenerate_triangles +=
+        repeats_vertex(mesh.triangles[t]) ||
+        is_degenerate_triangle(mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2));
+  }
+  report.duplicate_triangles = count_duplicates(mesh);
+  report.signed_volume = signed_volume(mesh);
+  return report;
+}
+
+}  // namespace ncv
