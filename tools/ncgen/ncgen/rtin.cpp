@@ -181,15 +181,26 @@ std::size_t rtin_triangle_count(const Grid& grid, const std::vector<float>& erro
 }
 
 float tolerance_for_count(const Grid& grid, const std::vector<float>& errors, std::size_t target) {
-  // Nearly every split adds two triangles (a diamond), so the k-th largest error is the
-  // tolerance that keeps about 2k + roots triangles.
+  // Nearly every split adds a diamond of two triangles, so the k-th largest error is the
+  // tolerance that keeps about 2k + roots triangles; splits on the grid's border add only
+  // one, which a few rounds make up for.
   const std::size_t roots = 2 * static_cast<std::size_t>(grid.tiles_x * grid.tiles_y);
   std::vector<float> sorted = errors;
-  const std::size_t splits = std::min((std::max(target, roots) - roots) / 2, sorted.size());
-  if (splits == 0) return *std::max_element(sorted.begin(), sorted.end());
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(splits - 1),
-                   sorted.end(), std::greater<>());
-  return std::nextafter(sorted[splits - 1], 0.0f);
+  const auto kth_largest = [&](std::size_t k) {
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(k - 1),
+                     sorted.end(), std::greater<>());
+    return std::nextafter(sorted[k - 1], 0.0f);
+  };
+  std::size_t splits =
+      std::clamp<std::size_t>((std::max(target, roots) - roots) / 2, 1, sorted.size());
+  float tolerance = kth_largest(splits);
+  for (int round = 0; round < 4 && splits < sorted.size(); ++round) {
+    const std::size_t count = rtin_triangle_count(grid, errors, tolerance);
+    if (count >= target) break;
+    splits = std::min(sorted.size(), splits + (target - count + 1) / 2);
+    tolerance = kth_largest(splits);
+  }
+  return tolerance;
 }
 
 }  // namespace ncv::gen
