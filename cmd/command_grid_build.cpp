@@ -39,13 +39,9 @@ void report_grid(const NominalGrid& g, const GridStatistics& s, double seconds) 
 
 void run_grid_build(const GridBuildOptions& options) {
   Stopwatch clock;
-  NominalGrid g;
-  g.nominal_source = input_name(options.nominal);
-  g.mesh = read_mesh(options.nominal);
-  g.nominal_hash = mesh_hash(g.mesh);
-  g.nominal = std::make_unique<NominalSurface>(g.mesh, g.nominal_source);
   GridStatistics statistics;
-  g.grid = build_uniform_grid(*g.nominal, GridOptions{options.cell_size}, &statistics);
+  const NominalGrid g = build_nominal_grid(read_mesh(options.nominal), input_name(options.nominal),
+                                           GridOptions{options.cell_size}, &statistics);
   OutputFile out(default_output(options.output, options.nominal, ".grid"), OutputKind::binary);
   write_grid_file(g, statistics, out);
   out.commit();

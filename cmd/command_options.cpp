@@ -2,7 +2,14 @@
 
 #include <filesystem>
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
 #include "error.hpp"
+#include "input_bytes.hpp"
+#include "memory_guard.hpp"
+#include "sampling_step.hpp"
+#include "stopwatch.hpp"
 
 namespace ncv::cmd {
 
@@ -10,6 +17,27 @@ SamplingScheme parse_scheme_option(const std::string& name) {
   if (name == "all") return SamplingScheme::all;
   if (name == "paper-ii") return SamplingScheme::paper_ii;
   throw UsageError("unknown scheme '" + name + "': use all or paper-ii");
+}
+
+SampleSet sample_workpiece(Mesh mesh, const std::string& path, const SamplingOptions& options) {
+  Stopwatch clock;
+  const SamplingScheme scheme = parse_scheme_option(options.scheme);
+  const double step = SamplingStep::parse(options.step).resolve(bounding_box(mesh).diagonal());
+  if (!(step > 0)) throw InputError(input_name(path), "the mesh has no extent");
+  const std::uint64_t predicted = predicted_sample_count(mesh, step, scheme);
+  check_memory_budget(fmt::format("sampling at step {} ({} samples)", step, predicted),
+                      static_cast<double>(predicted) * kBytesPerSampleDownstream, options.force);
+  SamplingReport report;
+  SampleSet samples = sample_mesh(std::move(mesh), step, scheme, &report);
+  samples.step_spec = options.step;
+  samples.workpiece_source = input_name(path);
+  spdlog::info("{}: {} triangles, step {} ({}), scheme {}", samples.workpiece_source,
+               report.triangles, step, options.step, options.scheme);
+  spdlog::info("{} samples; {} triangles too small for the step ({}); {} degenerate; {:.3f} s",
+               report.samples, report.small_triangles,
+               scheme == SamplingScheme::all ? "sampled at their vertices" : "skipped",
+               report.degenerate_triangles, clock.seconds());
+  return samples;
 }
 
 std::string default_output(const std::string& output, const std::string& input,
@@ -23,15 +51,16 @@ void add_output_option(CLI::App& sub, std::string& output, const std::string& de
   sub.add_option("-o,--output", output, description + "; - = standard output");
 }
 
-void add_step_options(CLI::App& sub, std::string& step, std::string& scheme) {
-  sub.add_option("-s,--step", step,
+void add_sampling_options(CLI::App& sub, SamplingOptions& options) {
+  sub.add_option("-s,--step", options.step,
                  "Sampling step: model units (0.05) or % of the bounding-box diagonal (0.1%)")
       ->capture_default_str();
-  sub.add_option("--scheme", scheme,
+  sub.add_option("--scheme", options.scheme,
                  "all: tiny triangles give their vertices (paper scheme I); paper-ii: they are "
                  "skipped (the paper's baseline)")
       ->check(CLI::IsMember({"all", "paper-ii"}))
       ->capture_default_str();
+  sub.add_flag("--force", options.force, "Sample even when the sample count looks unreasonable");
 }
 
 void add_distance_options(CLI::App& sub, DistanceStepOptions& options) {

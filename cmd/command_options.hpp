@@ -17,13 +17,22 @@ inline constexpr double kBytesPerSampleDownstream = 160;
 
 SamplingScheme parse_scheme_option(const std::string& name);
 
+struct SamplingOptions {
+  std::string step = kDefaultStep;
+  std::string scheme = "all";
+  bool force = false;
+};
+
+// Samples a workpiece read from `path` (memory guard, then the lattice) and reports it.
+SampleSet sample_workpiece(Mesh mesh, const std::string& path, const SamplingOptions& options);
+
 // OUTPUT if given; else the input's stem + extension in the current folder, or "-" when
 // the input is standard input.
 std::string default_output(const std::string& output, const std::string& input,
                            const std::string& extension);
 
 void add_output_option(CLI::App& sub, std::string& output, const std::string& description);
-void add_step_options(CLI::App& sub, std::string& step, std::string& scheme);
+void add_sampling_options(CLI::App& sub, SamplingOptions& options);
 void add_distance_options(CLI::App& sub, DistanceStepOptions& options);
 
 }  // namespace ncv::cmd

@@ -19,5 +19,8 @@ void add_sample_command(CLI::App& app, CommandContext& context);
 void add_inspect_command(CLI::App& app, CommandContext& context);
 void add_grid_build_command(CLI::App& app, CommandContext& context);
 void add_distance_command(CLI::App& app, CommandContext& context);
+void add_stats_command(CLI::App& app, CommandContext& context);
+void add_colorize_command(CLI::App& app, CommandContext& context);
+void add_run_command(CLI::App& app, CommandContext& context);
 
 }  // namespace ncv::cmd

@@ -33,6 +33,9 @@ int main(int argc, char** argv) {
   cmd::add_sample_command(app, context);
   cmd::add_grid_build_command(app, context);
   cmd::add_distance_command(app, context);
+  cmd::add_stats_command(app, context);
+  cmd::add_colorize_command(app, context);
+  cmd::add_run_command(app, context);
   cmd::add_inspect_command(app, context);
 
   // Logging must be set up before any subcommand callback runs.

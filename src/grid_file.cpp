@@ -54,6 +54,17 @@ T number_field(const Container& c, const std::string& pointer) {
 
 }  // namespace
 
+NominalGrid build_nominal_grid(Mesh mesh, const std::string& source, const GridOptions& options,
+                               GridStatistics* statistics) {
+  NominalGrid g;
+  g.nominal_source = source;
+  g.mesh = std::move(mesh);
+  g.nominal_hash = mesh_hash(g.mesh);
+  g.nominal = std::make_unique<NominalSurface>(g.mesh, source);
+  g.grid = build_uniform_grid(*g.nominal, options, statistics);
+  return g;
+}
+
 void write_grid_file(const NominalGrid& g, const GridStatistics& statistics, OutputFile& out) {
   ContainerWriter writer(FileKind::grid, kGridFormatVersion, grid_meta(g, statistics));
   writer.add<double>("nominal_vertices", flat_coordinates(g.mesh.vertices),

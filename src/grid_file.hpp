@@ -22,6 +22,10 @@ struct NominalGrid {
   std::string nominal_source;
 };
 
+// Prepares the nominal (topology, orientation, sign method) and builds its grid.
+NominalGrid build_nominal_grid(Mesh mesh, const std::string& source, const GridOptions& options,
+                               GridStatistics* statistics);
+
 void write_grid_file(const NominalGrid& grid, const GridStatistics& statistics, OutputFile& out);
 // Loads and validates (hash, indices, grid consistency) a grid file.
 NominalGrid read_grid_file(const std::string& path);

@@ -1,0 +1,95 @@
+#include "colorize_options.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "color_map.hpp"
+#include "error_mesh.hpp"
+#include "output_file.hpp"
+#include "ply_writer.hpp"
+#include "report_options.hpp"
+#include "svg_legend.hpp"
+
+namespace ncv::cmd {
+namespace {
+
+// Without --range: for the tolerance map the data's extent (at least the zone), so the
+// deepest shade marks the worst point; for the continuous maps ±max|d|, so zero is the
+// neutral colour.
+ValueRange default_range(const DistanceSet& distances, ColorMapKind kind,
+                         const std::optional<Tolerance>& tolerance) {
+  const auto [lo, hi] =
+      std::minmax_element(distances.field.distance.begin(), distances.field.distance.end());
+  if (kind == ColorMapKind::tolerance) {
+    return {std::min(*lo, tolerance->lower), std::max(*hi, tolerance->upper)};
+  }
+  const double reach = std::max({std::abs(*lo), std::abs(*hi), 1e-12});
+  return {-reach, reach};
+}
+
+ColorMap choose_map(const DistanceSet& distances, const ColorizeOptions& options) {
+  const std::optional<Tolerance> tolerance = parse_tolerance_option(options.tolerance);
+  const ColorMapKind kind = options.map.empty()
+                                ? (tolerance ? ColorMapKind::tolerance : ColorMapKind::diverging)
+                                : parse_color_map_kind(options.map);
+  if (kind == ColorMapKind::tolerance && !tolerance) {
+    throw UsageError("the tolerance colour map needs a tolerance: give --tol");
+  }
+  ValueRange range;
+  if (options.range.empty()) {
+    range = default_range(distances, kind, tolerance);
+  } else {
+    const Tolerance given = parse_tolerance(options.range);
+    range = {given.lower, given.upper};
+  }
+  return make_color_map(kind, range, tolerance);
+}
+
+void write_text_output(const std::string& path, const std::string& text) {
+  OutputFile out(path, OutputKind::text);
+  out.write(text);
+  out.commit();
+}
+
+}  // namespace
+
+void add_colorize_options(CLI::App& sub, ColorizeOptions& options) {
+  sub.add_option("--map", options.map,
+                 "Colour map: tolerance (green within, red excess, blue gouge), diverging "
+                 "(blue-white-red) or turbo; default: tolerance when --tol is given")
+      ->check(CLI::IsMember({"tolerance", "diverging", "turbo"}));
+  sub.add_option("--range", options.range,
+                 "Values the colour map spans, LO:HI or R for ±R (default: from the data)");
+  sub.add_flag("--refine", options.refine,
+               "Write the sampling lattice as the mesh, so every sample's error shows");
+  sub.add_option("--legend", options.legend_svg, "Also write the colour bar as SVG");
+}
+
+void write_colorized(const DistanceSet& distances, const std::string& ply_path,
+                     const ColorizeOptions& options) {
+  const ColorMap map = choose_map(distances, options);
+  const ErrorMesh mesh = options.refine
+                             ? lattice_error_mesh(distances.samples, distances.field.distance)
+                             : workpiece_error_mesh(distances.samples, distances.field.distance);
+  const std::string comments[] = {"ncverify " NCV_VERSION " signed error of " +
+                                      distances.samples.workpiece_source + " against " +
+                                      distances.nominal.source,
+                                  "positive = excess material, negative = gouge"};
+  std::ostringstream ply;
+  write_error_ply(ply, mesh, map, comments);
+  OutputFile out(ply_path, OutputKind::binary);
+  out.write(ply.view());
+  out.commit();
+  spdlog::info("wrote {} ({} vertices, {} faces, {})", out.display_name(), mesh.mesh.vertex_count(),
+               mesh.mesh.triangle_count(), map.description());
+  if (!options.legend_svg.empty()) {
+    std::ostringstream svg;
+    write_legend_svg(svg, map, "model units");
+    write_text_output(options.legend_svg, svg.str());
+  }
+}
+
+}  // namespace ncv::cmd

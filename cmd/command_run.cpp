@@ -1,0 +1,152 @@
+// ncverify run WORKPIECE NOMINAL: sample, grid-build, distance, stats and colorize in one
+// go, keeping every intermediate file in an output folder.
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <filesystem>
+
+#include "colorize_options.hpp"
+#include "command_options.hpp"
+#include "commands.hpp"
+#include "grid_file.hpp"
+#include "input_bytes.hpp"
+#include "mesh_reader.hpp"
+#include "report_options.hpp"
+#include "samples_file.hpp"
+#include "stopwatch.hpp"
+
+namespace ncv::cmd {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunOptions {
+  std::string workpiece;
+  std::string nominal;
+  std::string folder;
+  SamplingOptions sampling;
+  double cell_size = 0;
+  DistanceStepOptions distance;
+  ReportOptions report;
+  ColorizeOptions colorize;
+  std::string format = "text";
+};
+
+// Times each phase and says so on stderr, then sums them up.
+class PhaseLog {
+ public:
+  void done(const std::string& phase) {
+    phases_.push_back({phase, clock_.seconds()});
+    clock_.restart();
+  }
+  void summary() const {
+    std::string line;
+    double total = 0;
+    for (const auto& [phase, seconds] : phases_) {
+      line += fmt::format("{} {:.3f} s, ", phase, seconds);
+      total += seconds;
+    }
+    spdlog::info("phases: {}total {:.3f} s", line, total);
+  }
+
+ private:
+  Stopwatch clock_;
+  std::vector<std::pair<std::string, double>> phases_;
+};
+
+std::string stem(const std::string& path) {
+  return path == "-" ? "stdin" : fs::path(path).stem().string();
+}
+
+template <class Write>
+void write_file(const fs::path& path, OutputKind kind, Write&& write) {
+  OutputFile out(path.string(), kind);
+  write(out);
+  out.commit();
+}
+
+void run_all(const RunOptions& options, CommandContext& context) {
+  const std::string part = stem(options.workpiece);
+  const fs::path folder =
+      options.folder.empty() ? fs::path(part + ".ncverify") : fs::path(options.folder);
+  std::error_code error;
+  fs::create_directories(folder, error);
+  if (error)
+    throw InputError(folder.string(), "cannot create the output folder: " + error.message());
+  PhaseLog phases;
+
+  Mesh workpiece = read_mesh(options.workpiece);
+  Mesh nominal = read_mesh(options.nominal);
+  phases.done("read");
+
+  SampleSet samples = sample_workpiece(std::move(workpiece), options.workpiece, options.sampling);
+  write_file(folder / (part + ".samples"), OutputKind::binary,
+             [&](OutputFile& out) { write_samples_file(samples, out); });
+  phases.done("sample");
+
+  GridStatistics grid_statistics;
+  const NominalGrid grid = build_nominal_grid(std::move(nominal), input_name(options.nominal),
+                                              GridOptions{options.cell_size}, &grid_statistics);
+  write_file(folder / (stem(options.nominal) + ".grid"), OutputKind::binary,
+             [&](OutputFile& out) { write_grid_file(grid, grid_statistics, out); });
+  phases.done("grid-build");
+
+  const DistanceSet distances = measure_distances(std::move(samples), grid, options.distance);
+  write_file(folder / (part + ".dist"), OutputKind::binary,
+             [&](OutputFile& out) { write_distance_file(distances, out); });
+  phases.done("distance");
+
+  ReportOptions report_options = options.report;
+  if (report_options.histogram_svg.empty()) {
+    report_options.histogram_svg = (folder / (part + ".histogram.svg")).string();
+  }
+  const PartReport report = make_report(distances, report_options);
+  write_file(folder / (part + ".report.txt"), OutputKind::text,
+             [&](OutputFile& out) { out.write(report_text(report)); });
+  write_file(folder / (part + ".report.json"), OutputKind::text,
+             [&](OutputFile& out) { out.write(report_json(report).dump(2) + "\n"); });
+  write_histogram_if_asked(report, report_options);
+  phases.done("stats");
+
+  ColorizeOptions colorize = options.colorize;
+  colorize.tolerance = options.report.tolerance;
+  if (colorize.legend_svg.empty()) colorize.legend_svg = (folder / (part + ".legend.svg")).string();
+  write_colorized(distances, (folder / (part + ".ply")).string(), colorize);
+  phases.done("colorize");
+
+  OutputFile out("-", OutputKind::text);
+  if (options.format == "json") {
+    out.write(report_json(report).dump(2) + "\n");
+  } else if (options.format == "csv") {
+    out.write(report_csv_header() + report_csv_row(report));
+  } else {
+    out.write(report_text(report));
+  }
+  out.commit();
+  phases.summary();
+  spdlog::info("outputs in {}/", folder.string());
+  context.exit_status = verdict_status(report);
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app, CommandContext& context) {
+  auto options = std::make_shared<RunOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "run", "Verify WORKPIECE against NOMINAL in one go (all steps, intermediates kept)");
+  sub->add_option("workpiece", options->workpiece, "Machined workpiece mesh")->required();
+  sub->add_option("nominal", options->nominal, "Nominal part mesh")->required();
+  sub->add_option("-d,--dir", options->folder,
+                  "Output folder (default: WORKPIECE stem + .ncverify)");
+  add_sampling_options(*sub, options->sampling);
+  sub->add_option("--cell", options->cell_size, "Grid cell edge in model units");
+  add_distance_options(*sub, options->distance);
+  add_report_options(*sub, options->report);
+  add_colorize_options(*sub, options->colorize);
+  sub->add_option("--format", options->format, "Report on stdout: text, json or csv")
+      ->check(CLI::IsMember({"text", "json", "csv"}))
+      ->capture_default_str();
+  sub->callback([options, &context] { run_all(*options, context); });
+}
+
+}  // namespace ncv::cmd

@@ -1,0 +1,55 @@
+// ncverify stats DIST: error measures against a tolerance, as text, JSON or CSV; exit
+// status 1 when out of tolerance.
+#include <spdlog/spdlog.h>
+
+#include "commands.hpp"
+#include "distance_file.hpp"
+#include "output_file.hpp"
+#include "report_options.hpp"
+
+namespace ncv::cmd {
+namespace {
+
+struct StatsOptions {
+  std::string distances;
+  std::string output = "-";
+  std::string format = "text";
+  ReportOptions report;
+  bool no_header = false;
+};
+
+void run_stats(const StatsOptions& options, CommandContext& context) {
+  const DistanceSet distances = read_distance_file(options.distances);
+  const PartReport report = make_report(distances, options.report);
+  OutputFile out(options.output, OutputKind::text);
+  if (options.format == "json") {
+    out.write(report_json(report).dump(2) + "\n");
+  } else if (options.format == "csv") {
+    if (!options.no_header) out.write(report_csv_header());
+    out.write(report_csv_row(report));
+  } else {
+    out.write(report_text(report));
+  }
+  out.commit();
+  write_histogram_if_asked(report, options.report);
+  context.exit_status = verdict_status(report);
+}
+
+}  // namespace
+
+void add_stats_command(CLI::App& app, CommandContext& context) {
+  auto options = std::make_shared<StatsOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "stats", "Error measures of a distance file; exit 1 when out of tolerance");
+  sub->add_option("distances", options->distances, "Distance file from `distance` (- = stdin)")
+      ->required();
+  sub->add_option("--format", options->format, "text, json or csv")
+      ->check(CLI::IsMember({"text", "json", "csv"}))
+      ->capture_default_str();
+  sub->add_flag("--no-header", options->no_header, "CSV: only the row (to append to a table)");
+  sub->add_option("-o,--output", options->output, "Report file (default: standard output)");
+  add_report_options(*sub, options->report);
+  sub->callback([options, &context] { run_stats(*options, context); });
+}
+
+}  // namespace ncv::cmd
