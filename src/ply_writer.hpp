@@ -1,0 +1,22 @@
+// Binary little-endian PLY of a coloured error mesh for MeshLab and CloudCompare
+// (SPEC "Colouring"). Per vertex: float x y z (model coordinates), uchar red green blue
+// baked from the colour map, float quality (MeshLab's per-vertex quality) and float
+// scalar_signed_distance (CloudCompare's scalar field), both the signed error, NaN where
+// no sample lies. Faces: list uchar int vertex_indices.
+#pragma once
+
+#include <ostream>
+#include <span>
+#include <string>
+
+#include "color_map.hpp"
+#include "error_mesh.hpp"
+
+namespace ncv {
+
+// comments become header comment lines (line breaks replaced by blanks), followed by one
+// describing the colour map.
+void write_error_ply(std::ostream& out, const ErrorMesh& mesh, const ColorMap& map,
+                     std::span<const std::string> comments = {});
+
+}  // namespace ncv
