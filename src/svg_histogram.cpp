@@ -52,11 +52,14 @@ ValueRange shown_range(const Histogram& h, const std::optional<Tolerance>& toler
   return shown;
 }
 
+// The share axis ends at the first tick at or above the tallest bar.
 PlotScale make_scale(const Histogram& h, const std::optional<Tolerance>& tolerance) {
   double largest = 0;
   for (const double area : h.area) largest = std::max(largest, percent_of(h, area));
-  const std::vector<double> ticks = axis_ticks(0, largest > 0 ? largest : 1, 5);
-  return {shown_range(h, tolerance), std::max(ticks.back(), largest > 0 ? largest : 1)};
+  if (!(largest > 0)) largest = 1;
+  const std::vector<double> ticks = axis_ticks(0, largest, 5);
+  const double top = ticks.back() >= largest ? ticks.back() : ticks.back() + (ticks[1] - ticks[0]);
+  return {shown_range(h, tolerance), top};
 }
 
 void write_bars(std::ostream& out, const Histogram& h, const ColorMap& map, const PlotScale& s) {

@@ -10,8 +10,11 @@ namespace ncv {
 
 namespace {
 
-constexpr double kWidth = 280, kHeight = 460;
-constexpr double kBarLeft = 20, kBarWidth = 28;
+// The tolerance limits are labelled left of the bar, the ticks right of it, so that
+// neither hides the other.
+constexpr double kWidth = 300, kHeight = 460;
+constexpr double kBarLeft = 150, kBarWidth = 28;
+constexpr double kMargin = 12;
 constexpr double kBarTop = 56, kBarBottom = 376;
 constexpr int kWantedTicks = 7;
 
@@ -63,14 +66,12 @@ void write_limit(std::ostream& out, const ColorMap& map, const BarScale& scale,
     fmt::print(out,
                "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#000\" "
                "stroke-width=\"2\"/>\n",
-               kBarLeft - 5, px(y), kBarLeft + kBarWidth + 5, px(y));
-    fmt::print(out,
-               "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#000\" "
-               "stroke-dasharray=\"2,2\"/>\n",
-               kBarLeft + kBarWidth + 5, px(y), 160, px(y));
+               kBarLeft - 6, px(y), kBarLeft + kBarWidth, px(y));
   }
-  fmt::print(out, "<text x=\"164\" y=\"{}\" font-size=\"12\" font-weight=\"bold\">{} {}{}</text>\n",
-             px(y + 4), name, limit,
+  fmt::print(out,
+             "<text x=\"{}\" y=\"{}\" font-size=\"12\" font-weight=\"bold\" "
+             "text-anchor=\"end\">{} {}{}</text>\n",
+             kBarLeft - 10, px(y + 4), name, limit,
              on_bar ? "" : (limit > map.range.hi ? " (above)" : " (below)"));
 }
 
@@ -98,11 +99,11 @@ void write_legend_svg(std::ostream& out, const ColorMap& map, std::string_view u
   fmt::print(
       out,
       "<text x=\"{}\" y=\"22\" font-size=\"14\" font-weight=\"bold\">signed error ({})</text>\n",
-      kBarLeft - 8, xml_escaped(units));
+      kMargin, xml_escaped(units));
   fmt::print(out,
              "<text x=\"{}\" y=\"40\" font-size=\"11\" fill=\"#555\">+ excess material, "
              "\u2212 gouge; map: {}</text>\n",
-             kBarLeft - 8, to_string(map.kind));
+             kMargin, to_string(map.kind));
   write_gradient(out, map, scale);
   write_ticks(out, map, scale);
   if (map.tolerance) {
