@@ -4,6 +4,7 @@
 
 #include "commands.hpp"
 #include "distance_file.hpp"
+#include "error.hpp"
 #include "output_file.hpp"
 #include "report_options.hpp"
 
@@ -16,9 +17,17 @@ struct StatsOptions {
   std::string format = "text";
   ReportOptions report;
   bool no_header = false;
+  bool header_only = false;
 };
 
 void run_stats(const StatsOptions& options, CommandContext& context) {
+  if (options.header_only) {
+    OutputFile out(options.output, OutputKind::text);
+    out.write(report_csv_header());
+    out.commit();
+    return;
+  }
+  if (options.distances.empty()) throw UsageError("stats: give a distance file");
   const DistanceSet distances = read_distance_file(options.distances);
   const PartReport report = make_report(distances, options.report);
   OutputFile out(options.output, OutputKind::text);
@@ -41,12 +50,13 @@ void add_stats_command(CLI::App& app, CommandContext& context) {
   auto options = std::make_shared<StatsOptions>();
   CLI::App* sub = app.add_subcommand(
       "stats", "Error measures of a distance file; exit 1 when out of tolerance");
-  sub->add_option("distances", options->distances, "Distance file from `distance` (- = stdin)")
-      ->required();
+  sub->add_option("distances", options->distances, "Distance file from `distance` (- = stdin)");
   sub->add_option("--format", options->format, "text, json or csv")
       ->check(CLI::IsMember({"text", "json", "csv"}))
       ->capture_default_str();
   sub->add_flag("--no-header", options->no_header, "CSV: only the row (to append to a table)");
+  sub->add_flag("--csv-header", options->header_only,
+                "Only print the CSV header line (to start a table of many parts)");
   sub->add_option("-o,--output", options->output, "Report file (default: standard output)");
   add_report_options(*sub, options->report);
   sub->callback([options, &context] { run_stats(*options, context); });
