@@ -105,23 +105,27 @@ struct Bracket {
   std::vector<LinearPatch> partial;
 };
 
+void add_to_bracket(Bracket& bracket, const LinearPatch& p) {
+  const double a = bracket.a, b = bracket.b;
+  if (p.hi <= a) {
+    bracket.base += p.area;
+  } else if (p.lo >= b) {
+    return;
+  } else if (p.lo <= a && p.hi >= b && (p.mid <= a || p.mid >= b)) {
+    bracket.spanning.add_spanning(p, a, b);
+  } else {
+    bracket.partial.push_back(p);
+  }
+}
+
+// Narrows the bracket to (a, b) within it; patches are all patches on the first step,
+// then those the bracket held as partial.
 void narrow(Bracket& bracket, std::span<const LinearPatch> patches, double a, double b) {
   bracket.spanning.shift(a - bracket.a);
-  std::vector<LinearPatch> partial;
-  for (const LinearPatch& p : patches) {
-    if (p.hi <= a) {
-      bracket.base += p.area;
-    } else if (p.lo >= b) {
-      continue;
-    } else if (p.lo <= a && p.hi >= b && (p.mid <= a || p.mid >= b)) {
-      bracket.spanning.add_spanning(p, a, b);
-    } else {
-      partial.push_back(p);
-    }
-  }
   bracket.a = a;
   bracket.b = b;
-  bracket.partial = std::move(partial);
+  bracket.partial.clear();
+  for (const LinearPatch& p : patches) add_to_bracket(bracket, p);
 }
 
 // With no corner value inside (a, b), F is base + spanning there: bisect it.
@@ -158,20 +162,59 @@ double quantile_in(Bracket bracket, std::span<const double> sorted, double targe
   }
 }
 
+// Puts the values of the given ranks (ascending) at their sorted positions, every other
+// value between the ranks it lies between: a multi-way nth_element, splitting at the
+// middle rank and recursing, in O(n log ranks) instead of a full sort.
+void select_ranks(std::span<double> values, std::span<const std::size_t> ranks,
+                  std::size_t offset) {
+  if (ranks.empty()) return;
+  const std::size_t middle = ranks.size() / 2;
+  const std::size_t at = ranks[middle] - offset;
+  std::nth_element(values.begin(), values.begin() + at, values.end());
+  select_ranks(values.first(at), ranks.first(middle), offset);
+  select_ranks(values.subspan(at + 1), ranks.subspan(middle + 1), offset + at + 1);
+}
+
+// The first step's split points: the smallest value, so that every fraction beyond an atom
+// there has a lower end to its bracket, then values spread evenly by rank; each with the
+// position it holds in the selected array.
+struct RankSplits {
+  std::vector<double> values;
+  std::vector<std::size_t> positions;
+};
+
+RankSplits first_splits(std::vector<double>& values) {
+  const std::size_t count = values.size();
+  const std::size_t wanted = std::min(count, kSplits);
+  std::vector<std::size_t> ranks{0};
+  for (std::size_t k = 1; k <= wanted; ++k) {
+    const std::size_t rank = (count * k) / wanted - 1;
+    if (rank > ranks.back()) ranks.push_back(rank);
+  }
+  select_ranks(values, ranks, 0);
+  RankSplits splits;
+  for (const std::size_t rank : ranks) {
+    if (!splits.values.empty() && values[rank] == splits.values.back()) continue;
+    splits.values.push_back(values[rank]);
+    splits.positions.push_back(rank);
+  }
+  return splits;
+}
+
 }  // namespace
 
 std::vector<double> area_quantiles(std::span<const LinearPatch> patches,
-                                   std::span<const double> sorted_values,
+                                   std::span<const double> values,
                                    std::span<const double> fractions) {
   std::vector<double> result(fractions.size(), std::numeric_limits<double>::quiet_NaN());
-  if (sorted_values.empty()) return result;
-  // First step over all patches, shared by every fraction; the smallest value leads the
-  // splits so that every fraction above the atom there has a lower end to its bracket.
-  std::vector<double> splits{sorted_values.front()};
-  for (double s : rank_splits(sorted_values, 0, sorted_values.size())) {
-    if (s > splits.back()) splits.push_back(s);
-  }
-  const std::vector<double> at_most = area_at_most_each(patches, splits);
+  if (values.empty()) return result;
+  // Adding +0.0 turns -0.0 into +0.0: equal values are then equal bit patterns, and no
+  // result can come out as a negative zero.
+  std::vector<double> selected(values.size());
+  std::transform(values.begin(), values.end(), selected.begin(), [](double v) { return v + 0.0; });
+  const RankSplits splits = first_splits(selected);
+  // The first step runs over all patches once, shared by every fraction.
+  const std::vector<double> at_most = area_at_most_each(patches, splits.values);
   const double total = at_most.back();
   if (!(total > 0)) return result;
   tbb::parallel_for(std::size_t{0}, fractions.size(), [&](std::size_t f) {
@@ -180,12 +223,16 @@ std::vector<double> area_quantiles(std::span<const LinearPatch> patches,
         std::find_if(at_most.begin(), at_most.end(), [&](double F) { return F >= target; }) -
         at_most.begin());
     if (j == 0) {
-      result[f] = splits[0];
+      result[f] = splits.values[0];
       return;
     }
+    // The values strictly inside the bracket all lie between the two split positions.
+    std::vector<double> inside(selected.begin() + splits.positions[j - 1] + 1,
+                               selected.begin() + splits.positions[j]);
+    std::sort(inside.begin(), inside.end());
     Bracket bracket;
-    narrow(bracket, patches, splits[j - 1], splits[j]);
-    result[f] = quantile_in(std::move(bracket), sorted_values, target);
+    narrow(bracket, patches, splits.values[j - 1], splits.values[j]);
+    result[f] = quantile_in(std::move(bracket), inside, target);
   });
   return result;
 }

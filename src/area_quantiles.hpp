@@ -10,12 +10,12 @@
 
 namespace ncv {
 
-// fractions in [0, 1]. sorted_values must hold every corner value of the patches in
-// ascending order (duplicates allowed): the distribution function is quadratic between
-// consecutive corner values, which is what makes the search finish in closed form.
+// fractions in [0, 1]. values must hold every corner value of the patches, in any order
+// (duplicates allowed): the distribution function is quadratic between consecutive corner
+// values, which is what makes the search finish in closed form.
 // The result is NaN for every fraction when the patches have no area.
 std::vector<double> area_quantiles(std::span<const LinearPatch> patches,
-                                   std::span<const double> sorted_values,
+                                   std::span<const double> values,
                                    std::span<const double> fractions);
 
 }  // namespace ncv

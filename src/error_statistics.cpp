@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include <fmt/format.h>
-#include <tbb/parallel_sort.h>
 
 #include "area_quantiles.hpp"
 #include "error.hpp"
@@ -143,14 +142,9 @@ ToleranceAreas clip_to_tolerance(std::span<const LinearPatch> patches, const Tol
 
 std::vector<Percentile> compute_percentiles(std::span<const LinearPatch> patches,
                                             std::span<const double> d) {
-  // Adding +0.0 turns -0.0 into +0.0, so equal values are equal bit patterns and the
-  // sorted order is the same whatever the thread count.
-  std::vector<double> sorted(d.size());
-  std::transform(d.begin(), d.end(), sorted.begin(), [](double v) { return v + 0.0; });
-  tbb::parallel_sort(sorted.begin(), sorted.end());
   std::vector<double> fractions;
   for (double percent : kReportedPercentiles) fractions.push_back(percent / 100);
-  const std::vector<double> values = area_quantiles(patches, sorted, fractions);
+  const std::vector<double> values = area_quantiles(patches, d, fractions);
   std::vector<Percentile> percentiles;
   for (std::size_t k = 0; k < values.size(); ++k) {
     percentiles.push_back({kReportedPercentiles[k], values[k]});
