@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include <exception>
+#include <stdexcept>
 
 #include "commands.hpp"
 
@@ -31,10 +32,14 @@ int main(int argc, char** argv) {
     logger->set_level(quiet ? spdlog::level::warn : spdlog::level::info);
     spdlog::set_default_logger(logger);
   });
+  // Exit statuses: 0 done, 1 failed (e.g. cannot write), 2 bad usage.
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    return app.exit(e) == 0 ? 0 : 2;
+  } catch (const std::invalid_argument& e) {
+    spdlog::error("{}", e.what());
+    return 2;
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());
     return 1;
