@@ -91,8 +91,14 @@ class SignedDistanceJob {
       case SignMethod::winding:
         return tree_->evaluate(p) >= 0.5;
       default: {  // pseudonormal; automatic was resolved by the constructor's caller
-        const double side = dot(offset, nominal_.pseudonormal(hit.triangle, hit.feature));
+        const Vec3 normal = nominal_.pseudonormal(hit.triangle, hit.feature);
+        const double side = dot(offset, normal);
         if (side != 0) return side < 0;
+        // With a usable pseudonormal, the offset of a point off the surface lies in the
+        // feature's normal cone, where the dot product is strictly positive or negative;
+        // a zero comes only from a point on the surface whose offset is rounding noise
+        // (common: machined faces that coincide with nominal ones), so its sign is moot.
+        if (normal != Vec3{}) return false;
         return winding_number_exact(nominal_.corners(), p) >= 0.5;
       }
     }

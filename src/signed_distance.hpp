@@ -8,8 +8,10 @@
 //
 // Sign methods (sign_method.hpp):
 //   pseudonormal  sign of (p - c) . n, n the pseudonormal of the feature c lies on (face,
-//                 edge or vertex). Where that is zero (a feature whose faces cancel or are
-//                 all degenerate), the exact winding number decides for that point.
+//                 edge or vertex). Where n is zero (a feature whose faces cancel or are
+//                 all degenerate), the exact winding number decides for that point; where
+//                 only the product is zero, the point is on the surface up to rounding
+//                 and counts as outside (+).
 //   winding       inside when the generalized winding number w(p) >= 0.5, evaluated with
 //                 the fast hierarchy (WindingNumberTree, built once per call).
 //   paper         the sample's own normal N_p: positive when N_p . (p - c) > 0.
