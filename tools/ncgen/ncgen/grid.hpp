@@ -34,8 +34,6 @@ struct Grid {
   int nearest(double coordinate) const {
     return static_cast<int>(std::lround(coordinate / spacing));
   }
-  double length_x() const { return cells_x() * spacing; }
-  double length_y() const { return cells_y() * spacing; }
 };
 
 // The grid covering [0, tiles_x * tile_size] x [0, tiles_y * tile_size] at 2^level cells per

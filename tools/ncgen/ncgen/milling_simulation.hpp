@@ -33,7 +33,6 @@ class MillingSimulation {
   const std::vector<float>& zmap() const { return zmap_; }
   const std::vector<float>& nominal() const { return nominal_; }
   const std::vector<GougeRecord>& gouges() const { return gouges_; }
-  double stock_top() const { return stock_top_; }
 
  private:
   std::vector<float> z_levels(const MillingStage& stage) const;

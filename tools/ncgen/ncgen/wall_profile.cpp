@@ -38,8 +38,4 @@ double WallProfile::head_end() const {
   return (upper - lower) / std::tan(alpha) + tangent_length(head_fillet, alpha);
 }
 
-double WallProfile::foot_start() const {
-  return -tangent_length(foot_fillet, std::numbers::pi / 2 - draft);
-}
-
 }  // namespace ncv::gen

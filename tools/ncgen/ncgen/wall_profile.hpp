@@ -16,8 +16,6 @@ struct WallProfile {
   double height(double u) const;
   // Where the upper plane starts (inward distance).
   double head_end() const;
-  // Where the foot fillet leaves the lower plane (negative: outside the foot line).
-  double foot_start() const;
 };
 
 }  // namespace ncv::gen
