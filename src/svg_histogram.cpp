@@ -108,26 +108,36 @@ void write_axes(std::ostream& out, const PlotScale& s, std::string_view units) {
              (kTop + kBottom) / 2);
 }
 
+// Lower is labelled left of its line and upper right of its line, so close limits keep
+// their labels apart; a limit off the plot is named in its corner.
+struct Limit {
+  const char* name;
+  double value;
+  bool left;
+};
+
 void write_limits(std::ostream& out, const Tolerance& zone, const PlotScale& s) {
-  int hidden = 0;
-  for (const auto& [name, limit] : {std::pair{"lower", zone.lower}, {"upper", zone.upper}}) {
-    if (limit < s.x.lo || limit > s.x.hi) {
+  int off_plot = 0;
+  for (const Limit& limit : {Limit{"lower", zone.lower, true}, Limit{"upper", zone.upper, false}}) {
+    if (limit.value < s.x.lo || limit.value > s.x.hi) {
+      const bool low = limit.value < s.x.lo;
       fmt::print(out,
-                 "<text x=\"{}\" y=\"{}\" font-size=\"12\" font-weight=\"bold\"{}>{} {} "
-                 "(off the plot)</text>\n",
-                 limit < s.x.lo ? kLeft + 6 : kRight - 6, kTop + 14 + 16 * hidden++,
-                 limit < s.x.lo ? "" : " text-anchor=\"end\"", name, limit);
+                 "<text x=\"{}\" y=\"{}\" font-size=\"12\" font-weight=\"bold\" "
+                 "text-anchor=\"{}\">{} {} (off the plot)</text>\n",
+                 low ? kLeft + 6 : kRight - 6, kTop + 14 + 16 * off_plot++, low ? "start" : "end",
+                 limit.name, limit.value);
       continue;
     }
-    const double x = s.px_x(limit);
+    const double x = s.px_x(limit.value);
     fmt::print(out,
                "<line x1=\"{0}\" y1=\"{1}\" x2=\"{0}\" y2=\"{2}\" stroke=\"#000\" "
                "stroke-width=\"1.5\" stroke-dasharray=\"6,4\"/>\n",
                px(x), kTop - 8, kBottom);
     fmt::print(out,
                "<text x=\"{}\" y=\"{}\" font-size=\"12\" font-weight=\"bold\" "
-               "text-anchor=\"middle\">{} {}</text>\n",
-               px(x), kTop - 12, name, limit);
+               "text-anchor=\"{}\">{} {}</text>\n",
+               px(limit.left ? x - 4 : x + 4), kTop - 4, limit.left ? "end" : "start", limit.name,
+               limit.value);
   }
 }
 
