@@ -313,13 +313,14 @@ TEST_CASE("quantiles of atoms and ramps", "[stats]") {
   // half of the area sits at 0, the ramp's lower half lies in [1, 1 + sqrt(2)].
   const std::vector<ncv::LinearPatch> patches = {ncv::make_linear_patch(1, 0, 0, 0),
                                                  ncv::make_linear_patch(1, 1, 3, 3)};
-  const std::vector<double> values = {0, 0, 0, 1, 3, 3};
+  const std::vector<double> values = {3, 0, 1, 0, 3, 0};  // the corner values, any order
   const std::vector<double> fractions = {0, 0.25, 0.5, 0.5 + 1e-12, 0.75, 1};
   const std::vector<double> q = ncv::area_quantiles(patches, values, fractions);
   CHECK(q[0] == 0);
   CHECK(q[1] == 0);
   CHECK(q[2] == 0);
-  CHECK(q[3] == Approx(1).margin(1e-5));
+  // Just past the atom: the ramp's first 2e-12 of area ends at 1 + sqrt(8e-12).
+  CHECK(q[3] == Approx(1 + std::sqrt(8e-12)).margin(1e-9));
   // The ramp patch has F(t) = (t - 1)^2 / 4 on [1, 3]: half its area below 1 + sqrt(2).
   CHECK(q[4] == Approx(1 + std::sqrt(2.0)).epsilon(1e-14));
   CHECK(q[5] == 3);
