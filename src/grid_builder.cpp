@@ -173,6 +173,10 @@ Layout choose_layout(const NominalSurface& nominal, double h, GridStatistics& st
   const std::uint64_t reference_budget =
       std::max(kReferencesPerTriangle * triangles, kMinReferenceBudget);
   const BoundingBox& part = nominal.local_bounds();
+  // No axis can ever use more than 2^31 cells (the cell budget is below that), so a cell
+  // smaller than the part's extent / 2^31 grows at once: the cell counts below stay finite.
+  const Vec3 extent = part.extent();
+  h = std::max(h, std::max({extent.x, extent.y, extent.z}) * 0x1p-31);
   for (;; ++stats.growth_steps) {
     const std::array<double, 3> n = cells_per_axis(part, h);
     const double cells = n[0] * n[1] * n[2];

@@ -1,5 +1,6 @@
 #include "uniform_grid.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -41,6 +42,7 @@ void check_offsets(const UniformGrid& grid, const std::string& source) {
 }
 
 void check_lists(const UniformGrid& grid, std::size_t triangle_count, const std::string& source) {
+  std::vector<bool> listed(triangle_count, false);
   for (std::size_t c = 0; c + 1 < grid.cell_offsets.size(); ++c) {
     for (std::uint64_t r = grid.cell_offsets[c]; r < grid.cell_offsets[c + 1]; ++r) {
       const std::uint32_t t = grid.cell_triangles[r];
@@ -51,7 +53,13 @@ void check_lists(const UniformGrid& grid, std::size_t triangle_count, const std:
       if (r > grid.cell_offsets[c] && grid.cell_triangles[r - 1] >= t) {
         throw InputError(source, fmt::format("grid cell {} list is not strictly ascending", c));
       }
+      listed[t] = true;
     }
+  }
+  const auto missing = std::find(listed.begin(), listed.end(), false);
+  if (missing != listed.end()) {
+    throw InputError(source,
+                     fmt::format("grid lists triangle {} in no cell", missing - listed.begin()));
   }
 }
 

@@ -248,6 +248,19 @@ TEST_CASE("grid build does not depend on the thread count", "[grid]") {
   CHECK(one.cell_triangles == two.cell_triangles);
 }
 
+TEST_CASE("a cell size far below the part's size grows without overflow", "[grid]") {
+  const ncv::NominalSurface nominal(fx::box({0, 0, 0}, {1e90, 1e90, 1e90}), "huge");
+  for (double tiny : {1e-300, 5e-324, 1.0}) {
+    ncv::GridOptions options;
+    options.cell_size = tiny;
+    ncv::GridStatistics stats;
+    const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal, options, &stats);
+    CHECK(stats.cells <= ncv::kMinCellBudget);
+    CHECK(std::isfinite(grid.cell_size));
+    grid.validate(nominal, "built");
+  }
+}
+
 TEST_CASE("grid options are checked", "[grid]") {
   const auto nominal = nominal_of(fx::box({0, 0, 0}, {1, 1, 1}));
   for (double bad : {-1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
@@ -310,5 +323,20 @@ TEST_CASE("grid validation rejects every kind of corruption", "[grid]") {
       },
       "unsorted list");
   rejects([](ncv::UniformGrid& g) { g.origin.x += 0.5; }, "does not cover the nominal");
+  rejects(
+      [](ncv::UniformGrid& g) {
+        // Drop triangle 0 from every list it is in.
+        ncv::UniformGrid pruned = g;
+        pruned.cell_triangles.clear();
+        for (std::size_t c = 0; c + 1 < g.cell_offsets.size(); ++c) {
+          pruned.cell_offsets[c] = pruned.cell_triangles.size();
+          for (std::uint64_t r = g.cell_offsets[c]; r < g.cell_offsets[c + 1]; ++r) {
+            if (g.cell_triangles[r] != 0) pruned.cell_triangles.push_back(g.cell_triangles[r]);
+          }
+        }
+        pruned.cell_offsets.back() = pruned.cell_triangles.size();
+        g = pruned;
+      },
+      "a triangle in no cell");
   CHECK_THROWS_AS(good.validate(199, "grid.bin"), ncv::InputError);
 }
