@@ -106,8 +106,8 @@ void NominalSurface::choose_sign_method(const std::string& source) {
   if (winding_reason_.empty()) return;
   automatic_sign_ = SignMethod::winding;
   spdlog::warn(
-      "{}: the nominal is not a closed oriented solid ({}); signs use the generalized "
-      "winding number",
+      "{}: the nominal is not a closed oriented solid ({}); the automatic sign uses the "
+      "generalized winding number",
       source, winding_reason_);
 }
 
