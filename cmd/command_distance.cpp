@@ -19,13 +19,16 @@ struct DistanceOptions {
   DistanceStepOptions step;
 };
 
+// Output opened first and the report after the commit, as in `sample`.
 void run_distance(const DistanceOptions& options) {
+  OutputFile out(default_output(options.output, options.samples, ".dist"), OutputKind::binary);
   SampleSet samples = read_samples_file(options.samples);
   const NominalGrid grid = read_grid_file(options.grid);
-  const DistanceSet result = measure_distances(std::move(samples), grid, options.step);
-  OutputFile out(default_output(options.output, options.samples, ".dist"), OutputKind::binary);
+  double seconds = 0;
+  const DistanceSet result = measure_distances(std::move(samples), grid, options.step, &seconds);
   write_distance_file(result, out);
   out.commit();
+  log_distance_report(result, seconds);
   spdlog::info("wrote {}", out.display_name());
 }
 

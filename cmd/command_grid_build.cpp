@@ -37,12 +37,13 @@ void report_grid(const NominalGrid& g, const GridStatistics& s, double seconds) 
   }
 }
 
+// Output opened first and the report after the commit, as in `sample`.
 void run_grid_build(const GridBuildOptions& options) {
   Stopwatch clock;
+  OutputFile out(default_output(options.output, options.nominal, ".grid"), OutputKind::binary);
   GridStatistics statistics;
   const NominalGrid g = build_nominal_grid(read_mesh(options.nominal), input_name(options.nominal),
                                            GridOptions{options.cell_size}, &statistics);
-  OutputFile out(default_output(options.output, options.nominal, ".grid"), OutputKind::binary);
   write_grid_file(g, statistics, out);
   out.commit();
   report_grid(g, statistics, clock.seconds());

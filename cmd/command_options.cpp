@@ -8,6 +8,7 @@
 #include "error.hpp"
 #include "input_bytes.hpp"
 #include "memory_guard.hpp"
+#include "samples_file.hpp"
 #include "sampling_step.hpp"
 #include "stopwatch.hpp"
 
@@ -19,7 +20,8 @@ SamplingScheme parse_scheme_option(const std::string& name) {
   throw UsageError("unknown scheme '" + name + "': use all or paper-ii");
 }
 
-SampleSet sample_workpiece(Mesh mesh, const std::string& path, const SamplingOptions& options) {
+SampledWorkpiece sample_workpiece(Mesh mesh, const std::string& path,
+                                  const SamplingOptions& options) {
   Stopwatch clock;
   const SamplingScheme scheme = parse_scheme_option(options.scheme);
   const double step = SamplingStep::parse(options.step).resolve(bounding_box(mesh).diagonal());
@@ -27,17 +29,23 @@ SampleSet sample_workpiece(Mesh mesh, const std::string& path, const SamplingOpt
   const std::uint64_t predicted = predicted_sample_count(mesh, step, scheme);
   check_memory_budget(fmt::format("sampling at step {} ({} samples)", step, predicted),
                       static_cast<double>(predicted) * kBytesPerSampleDownstream, options.force);
-  SamplingReport report;
-  SampleSet samples = sample_mesh(std::move(mesh), step, scheme, &report);
-  samples.step_spec = options.step;
-  samples.workpiece_source = input_name(path);
-  spdlog::info("{}: {} triangles, step {} ({}), scheme {}", samples.workpiece_source,
-               report.triangles, step, options.step, options.scheme);
+  SampledWorkpiece sampled;
+  sampled.samples = sample_mesh(std::move(mesh), step, scheme, &sampled.report);
+  sampled.samples.step_spec = options.step;
+  sampled.samples.workpiece_source = input_name(path);
+  sampled.seconds = clock.seconds();
+  return sampled;
+}
+
+void log_sampling(const SampledWorkpiece& sampled) {
+  const SampleSet& s = sampled.samples;
+  const SamplingReport& r = sampled.report;
+  spdlog::info("{}: {} triangles, step {} ({}), scheme {}", s.workpiece_source, r.triangles, s.step,
+               s.step_spec, scheme_name(s.scheme));
   spdlog::info("{} samples; {} triangles too small for the step ({}); {} degenerate; {:.3f} s",
-               report.samples, report.small_triangles,
-               scheme == SamplingScheme::all ? "sampled at their vertices" : "skipped",
-               report.degenerate_triangles, clock.seconds());
-  return samples;
+               r.samples, r.small_triangles,
+               s.scheme == SamplingScheme::all ? "sampled at their vertices" : "skipped",
+               r.degenerate_triangles, sampled.seconds);
 }
 
 std::string default_output(const std::string& output, const std::string& input,

@@ -23,8 +23,17 @@ struct SamplingOptions {
   bool force = false;
 };
 
-// Samples a workpiece read from `path` (memory guard, then the lattice) and reports it.
-SampleSet sample_workpiece(Mesh mesh, const std::string& path, const SamplingOptions& options);
+struct SampledWorkpiece {
+  SampleSet samples;
+  SamplingReport report;
+  double seconds = 0;
+};
+
+// Samples a workpiece read from `path` (memory guard, then the lattice).
+SampledWorkpiece sample_workpiece(Mesh mesh, const std::string& path,
+                                  const SamplingOptions& options);
+// The paper's Table 1 figures of a sampling, on stderr.
+void log_sampling(const SampledWorkpiece& sampled);
 
 // OUTPUT if given; else the input's stem + extension in the current folder, or "-" when
 // the input is standard input.

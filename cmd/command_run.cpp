@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "grid_file.hpp"
 #include "input_bytes.hpp"
+#include "memory_guard.hpp"
 #include "mesh_reader.hpp"
 #include "report_options.hpp"
 #include "samples_file.hpp"
@@ -30,26 +31,56 @@ struct RunOptions {
   ReportOptions report;
   ColorizeOptions colorize;
   std::string format = "text";
+  std::string timings;
 };
 
-// Times each phase and says so on stderr, then sums them up.
+// Wall time per phase; writing the intermediate files is its own phase ("write"), so the
+// compute phases are what the algorithm costs.
 class PhaseLog {
  public:
-  void done(const std::string& phase) {
-    phases_.push_back({phase, clock_.seconds()});
+  void done(const std::string& phase) { add(phase, clock_.seconds()); }
+  template <class Work>
+  void time(const std::string& phase, Work&& work) {
+    clock_.restart();
+    work();
+    done(phase);
     clock_.restart();
   }
-  void summary() const {
+  void summary(const std::string& timings_path, const DistanceSet& distances) const {
     std::string line;
     double total = 0;
+    nlohmann::json phases = nlohmann::json::object();
     for (const auto& [phase, seconds] : phases_) {
       line += fmt::format("{} {:.3f} s, ", phase, seconds);
+      phases[phase] = seconds;
       total += seconds;
     }
     spdlog::info("phases: {}total {:.3f} s", line, total);
+    if (timings_path.empty()) return;
+    const nlohmann::json timings = {
+        {"phases", phases},
+        {"total", total},
+        {"triangles", distances.samples.workpiece.triangle_count()},
+        {"samples", distances.samples.sample_count()},
+        {"nominal_triangles", distances.nominal.triangles},
+        {"triangles_tested_per_sample", distances.triangles_tested_per_sample},
+        {"peak_memory_bytes", peak_memory_bytes()}};
+    OutputFile out(timings_path, OutputKind::text);
+    out.write(timings.dump(2) + "\n");
+    out.commit();
   }
 
  private:
+  void add(const std::string& phase, double seconds) {
+    for (auto& [name, total] : phases_) {
+      if (name == phase) {
+        total += seconds;
+        return;
+      }
+    }
+    phases_.push_back({phase, seconds});
+  }
+
   Stopwatch clock_;
   std::vector<std::pair<std::string, double>> phases_;
 };
@@ -79,22 +110,34 @@ void run_all(const RunOptions& options, CommandContext& context) {
   Mesh nominal = read_mesh(options.nominal);
   phases.done("read");
 
-  SampleSet samples = sample_workpiece(std::move(workpiece), options.workpiece, options.sampling);
-  write_file(folder / (part + ".samples"), OutputKind::binary,
-             [&](OutputFile& out) { write_samples_file(samples, out); });
+  SampledWorkpiece sampled =
+      sample_workpiece(std::move(workpiece), options.workpiece, options.sampling);
+  log_sampling(sampled);
+  SampleSet& samples = sampled.samples;
   phases.done("sample");
+  phases.time("write", [&] {
+    write_file(folder / (part + ".samples"), OutputKind::binary,
+               [&](OutputFile& out) { write_samples_file(samples, out); });
+  });
 
   GridStatistics grid_statistics;
   const NominalGrid grid = build_nominal_grid(std::move(nominal), input_name(options.nominal),
                                               GridOptions{options.cell_size}, &grid_statistics);
-  write_file(folder / (stem(options.nominal) + ".grid"), OutputKind::binary,
-             [&](OutputFile& out) { write_grid_file(grid, grid_statistics, out); });
   phases.done("grid-build");
+  phases.time("write", [&] {
+    write_file(folder / (stem(options.nominal) + ".grid"), OutputKind::binary,
+               [&](OutputFile& out) { write_grid_file(grid, grid_statistics, out); });
+  });
 
-  const DistanceSet distances = measure_distances(std::move(samples), grid, options.distance);
-  write_file(folder / (part + ".dist"), OutputKind::binary,
-             [&](OutputFile& out) { write_distance_file(distances, out); });
+  double distance_seconds = 0;
+  const DistanceSet distances =
+      measure_distances(std::move(samples), grid, options.distance, &distance_seconds);
+  log_distance_report(distances, distance_seconds);
   phases.done("distance");
+  phases.time("write", [&] {
+    write_file(folder / (part + ".dist"), OutputKind::binary,
+               [&](OutputFile& out) { write_distance_file(distances, out); });
+  });
 
   ReportOptions report_options = options.report;
   if (report_options.histogram_svg.empty()) {
@@ -123,7 +166,7 @@ void run_all(const RunOptions& options, CommandContext& context) {
     out.write(report_text(report));
   }
   out.commit();
-  phases.summary();
+  phases.summary(options.timings, distances);
   spdlog::info("outputs in {}/", folder.string());
   context.exit_status = verdict_status(report);
 }
@@ -146,6 +189,8 @@ void add_run_command(CLI::App& app, CommandContext& context) {
   sub->add_option("--format", options->format, "Report on stdout: text, json or csv")
       ->check(CLI::IsMember({"text", "json", "csv"}))
       ->capture_default_str();
+  sub->add_option("--timings", options->timings,
+                  "Also write each phase's wall time and the peak memory as JSON (benchmarks)");
   sub->callback([options, &context] { run_all(*options, context); });
 }
 

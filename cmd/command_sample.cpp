@@ -15,12 +15,15 @@ struct SampleOptions {
   SamplingOptions sampling;
 };
 
+// The output is opened first, so an unwritable destination fails before any work; the
+// report follows the commit, so a failure is the only line on stderr.
 void run_sample(const SampleOptions& options) {
-  const SampleSet samples =
-      sample_workpiece(read_mesh(options.workpiece), options.workpiece, options.sampling);
   OutputFile out(default_output(options.output, options.workpiece, ".samples"), OutputKind::binary);
-  write_samples_file(samples, out);
+  const SampledWorkpiece sampled =
+      sample_workpiece(read_mesh(options.workpiece), options.workpiece, options.sampling);
+  write_samples_file(sampled.samples, out);
   out.commit();
+  log_sampling(sampled);
   spdlog::info("wrote {}", out.display_name());
 }
 

@@ -45,7 +45,7 @@ void warn_if_apart(const SampleSet& samples, const NominalGrid& grid) {
 }  // namespace
 
 DistanceSet measure_distances(SampleSet samples, const NominalGrid& grid,
-                              const DistanceStepOptions& options) {
+                              const DistanceStepOptions& options, double* seconds) {
   warn_if_apart(samples, grid);
   const SignMethod method = resolve_sign_method(*grid.nominal, options.sign);
   const std::vector<Vec3> normals =
@@ -59,7 +59,7 @@ DistanceSet measure_distances(SampleSet samples, const NominalGrid& grid,
       *grid.nominal, options.brute_force ? nullptr : &grid.grid, samples.positions, normals, method,
       &statistics, [&](std::size_t done, std::size_t) { progress.update(done); });
   progress.finish();
-  const double seconds = clock.seconds();
+  if (seconds) *seconds = clock.seconds();
 
   result.samples = std::move(samples);
   result.nominal = {grid.nominal_source, grid.nominal_hash, grid.mesh.triangle_count(),
@@ -67,13 +67,16 @@ DistanceSet measure_distances(SampleSet samples, const NominalGrid& grid,
   result.sign_method = std::string(sign_method_name(method));
   result.search = options.brute_force ? "brute-force" : "grid";
   result.triangles_tested_per_sample = statistics.triangles_per_query();
+  return result;
+}
+
+void log_distance_report(const DistanceSet& d, double seconds) {
+  const auto samples = static_cast<double>(d.samples.sample_count());
   spdlog::info(
       "{} samples against {} nominal triangles in {:.3f} s ({:.3g} samples/s); {} "
       "search, {:.1f} triangles tested per sample; sign by {}",
-      statistics.queries, grid.mesh.triangle_count(), seconds,
-      static_cast<double>(statistics.queries) / std::max(seconds, 1e-9), result.search,
-      result.triangles_tested_per_sample, result.sign_method);
-  return result;
+      d.samples.sample_count(), d.nominal.triangles, seconds, samples / std::max(seconds, 1e-9),
+      d.search, d.triangles_tested_per_sample, d.sign_method);
 }
 
 }  // namespace ncv

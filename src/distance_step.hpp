@@ -14,8 +14,10 @@ struct DistanceStepOptions {
 };
 
 // Warns when the workpiece and the nominal barely overlap (a wrong file or unit), then
-// measures every sample.
+// measures every sample; `seconds` receives the time the measuring took.
 DistanceSet measure_distances(SampleSet samples, const NominalGrid& grid,
-                              const DistanceStepOptions& options);
+                              const DistanceStepOptions& options, double* seconds = nullptr);
+// Samples per second, triangles tested per sample and the sign method, on stderr.
+void log_distance_report(const DistanceSet& distances, double seconds);
 
 }  // namespace ncv

@@ -7,6 +7,8 @@
 namespace ncv {
 
 std::uint64_t physical_memory_bytes();
+// Peak resident memory of this process so far.
+std::uint64_t peak_memory_bytes();
 std::string format_bytes(std::uint64_t bytes);  // "1.5 GB"
 
 // Throws UsageError (what it would take, how much memory, the way out) when `bytes`
