@@ -105,15 +105,19 @@ Moments integrate(std::span<const LinearPatch> patches, double shift) {
       });
 }
 
-// The variance integrates (d - mean)^2 in a second pass rather than taking
-// E[d^2] - mean^2, which cancels catastrophically when the mean dwarfs the spread.
+// The mean is SPEC's d_mean = (1/|S1|) ∫ d dS over the lattice: divided by the whole
+// workpiece area, as the paper's eq. 7, so under scheme II the skipped triangles weigh in
+// with nothing (that is the paper's comparison of the schemes). RMS and spread describe
+// the sampled surface. The variance integrates (d - m)^2 in a second pass rather than
+// taking E[d^2] - m^2, which cancels catastrophically when the mean dwarfs the spread.
 void compute_moments(std::span<const LinearPatch> patches, ErrorStatistics& stats) {
   const Moments raw = integrate(patches, 0);
   stats.sampled_area = raw.area;
   if (!(raw.area > 0)) return;
-  stats.mean = raw.sum / raw.area;
+  stats.mean = raw.sum / (stats.workpiece_area > 0 ? stats.workpiece_area : raw.area);
   stats.rms = std::sqrt(raw.square / raw.area);
-  stats.std_dev = std::sqrt(integrate(patches, stats.mean).square / raw.area);
+  const double sampled_mean = raw.sum / raw.area;
+  stats.std_dev = std::sqrt(integrate(patches, sampled_mean).square / raw.area);
 }
 
 ToleranceAreas clip_to_tolerance(std::span<const LinearPatch> patches, const Tolerance& zone,

@@ -5,8 +5,9 @@
 // sample errors over the lattice sub-triangles (lattice_triangles.hpp), and evaluates it
 // exactly for that interpolant: the mean is paper eq. 8 summed, RMS and standard deviation
 // integrate its square in closed form, and the percentiles, histogram and tolerance areas
-// all come from the exact distribution of its values over the surface. Averages divide by
-// the sampled area, so under scheme II they describe the sampled part of the surface.
+// all come from the exact distribution of its values over the surface. The mean divides by
+// the whole workpiece area |S1| (SPEC, paper eq. 7); the other measures describe the
+// sampled surface, which is the whole of it under scheme I.
 #pragma once
 
 #include <cstdint>
@@ -48,7 +49,7 @@ struct ErrorStatistics {
   SampleExtreme max;      // d_max, eq. 5
   SampleExtreme min;      // d_min, eq. 6
   SampleExtreme max_abs;  // |d| max, the one-sided Hausdorff distance (value is >= 0)
-  double mean = 0;        // eq. 7 by eq. 8
+  double mean = 0;        // eq. 7 by eq. 8, over |S1|
   double rms = 0;
   double std_dev = 0;
   std::vector<Percentile> percentiles;  // kReportedPercentiles; NaN when sampled_area is 0
