@@ -38,13 +38,15 @@ struct RunOptions {
 // compute phases are what the algorithm costs.
 class PhaseLog {
  public:
-  void done(const std::string& phase) { add(phase, clock_.seconds()); }
+  // Ends the phase running since the last call.
+  void done(const std::string& phase) {
+    add(phase, clock_.seconds());
+    clock_.restart();
+  }
   template <class Work>
   void time(const std::string& phase, Work&& work) {
-    clock_.restart();
     work();
     done(phase);
-    clock_.restart();
   }
   void summary(const std::string& timings_path, const DistanceSet& distances) const {
     std::string line;
