@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "container.hpp"
+#include "error.hpp"
 #include "input_bytes.hpp"
 #include "output_file.hpp"
 
@@ -47,11 +48,17 @@ std::string format_value(const Container::RawSection& s, std::uint64_t index) {
 
 std::vector<Column> record_columns(const Container& c, std::uint64_t records) {
   std::vector<Column> columns;
-  if (!c.meta().contains("records")) return columns;
-  for (const auto& name : c.field("/records/sections")) {
+  if (!c.meta().contains("records")) {
+    throw UsageError(fmt::format("a {} has no per-record table; see its header (--json)",
+                                 kind_description(c.kind())));
+  }
+  const nlohmann::json& names = c.field("/records/sections");
+  if (!names.is_array()) c.fail("record table is malformed");
+  for (const auto& name : names) {
+    if (!name.is_string()) c.fail("record table is malformed");
     const auto section = c.raw_section(name.get<std::string>());
-    if (records == 0 || section.elements % records != 0) c.fail("record section size mismatch");
-    const std::uint64_t width = section.elements / records;
+    const std::uint64_t width = section.columns;
+    if (section.elements / width != records) c.fail("record section size mismatch");
     for (std::uint64_t k = 0; k < width; ++k) {
       const std::string suffix = width == 1   ? std::string()
                                  : width == 3 ? fmt::format("_{}", "xyz"[k])
@@ -63,8 +70,9 @@ std::vector<Column> record_columns(const Container& c, std::uint64_t records) {
 }
 
 void write_records(const Container& c, const InspectOptions& options, OutputFile& out) {
-  const std::uint64_t records = c.meta().contains("records") ? c.count("/records/count") : 0;
-  const std::vector<Column> columns = record_columns(c, records);
+  const std::vector<Column> columns =
+      record_columns(c, c.meta().contains("records") ? c.count("/records/count") : 0);
+  const std::uint64_t records = c.count("/records/count");
   const std::uint64_t shown =
       options.head >= 0 ? std::min<std::uint64_t>(records, options.head) : records;
   const char separator = options.csv ? ',' : '\t';
@@ -121,7 +129,7 @@ void run_inspect(const InspectOptions& options) {
     write_records(c, options, out);
   } else {
     write_header_text(c, input_name(options.file), out);
-    if (options.head >= 0) write_records(c, options, out);
+    if (options.head >= 0 && c.meta().contains("records")) write_records(c, options, out);
   }
   out.commit();
 }

@@ -60,6 +60,11 @@ int main(int argc, char** argv) {
   } catch (const std::bad_alloc&) {
     spdlog::error("out of memory");
     return cmd::kExitBadInput;
+  } catch (const std::exception& e) {
+    // Every expected fault is an InputError or UsageError; this is a bug, but still one
+    // line and a clean exit rather than a crash.
+    spdlog::error("internal error: {}", e.what());
+    return cmd::kExitBadInput;
   }
   return context.exit_status;
 }

@@ -230,11 +230,13 @@ void Container::parse_section_table(std::uint64_t data_start) {
   const std::uint64_t data_end = bytes_.size() - kTrailerBytes;
   for (const auto& entry : table) {
     SectionEntry s;
+    std::vector<std::uint64_t> shape;
     try {
       s.name = entry.at("name").get<std::string>();
       s.dtype = entry.at("dtype").get<std::string>();
       s.offset = entry.at("offset").get<std::uint64_t>();
       s.bytes = entry.at("bytes").get<std::uint64_t>();
+      shape = entry.at("shape").get<std::vector<std::uint64_t>>();
     } catch (const nlohmann::json::exception&) {
       fail("malformed section table entry");
     }
@@ -245,6 +247,18 @@ void Container::parse_section_table(std::uint64_t data_start) {
       fail(fmt::format("section '{}' lies outside the file", s.name));
     }
     s.elements = s.bytes / width;
+    s.columns = 1;
+    std::uint64_t product = shape.empty() ? 0 : shape[0];
+    for (std::size_t k = 1; k < shape.size(); ++k) {
+      if (shape[k] == 0 || product > s.elements / shape[k]) {
+        fail(fmt::format("section '{}' has a shape its size does not match", s.name));
+      }
+      product *= shape[k];
+      s.columns *= shape[k];
+    }
+    if (product != s.elements) {
+      fail(fmt::format("section '{}' has a shape its size does not match", s.name));
+    }
     sections_.push_back(std::move(s));
   }
 }
@@ -284,7 +298,7 @@ void Container::copy_section(const std::string& name, void* out, std::size_t byt
 
 Container::RawSection Container::raw_section(const std::string& name) const {
   const SectionEntry& s = section(name);
-  return {s.dtype, s.elements, bytes_.data() + s.offset};
+  return {s.dtype, s.elements, s.columns, bytes_.data() + s.offset};
 }
 
 const nlohmann::json& Container::field(const std::string& json_pointer) const {

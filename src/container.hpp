@@ -110,6 +110,7 @@ class Container {
   struct RawSection {
     std::string dtype;
     std::uint64_t elements;
+    std::uint64_t columns;  // the product of the shape after its first dimension
     const char* data;
   };
   RawSection raw_section(const std::string& name) const;
@@ -121,7 +122,7 @@ class Container {
  private:
   struct SectionEntry {
     std::string name, dtype;
-    std::uint64_t offset, bytes, elements;
+    std::uint64_t offset, bytes, elements, columns;
   };
   const SectionEntry& section(const std::string& name) const;
   std::uint64_t checked_count(const std::string& name, const char* dtype, std::uint64_t rows,
