@@ -147,9 +147,9 @@ void run_all(const RunOptions& options, CommandContext& context) {
   }
   const PartReport report = make_report(distances, report_options);
   write_file(folder / (part + ".report.txt"), OutputKind::text,
-             [&](OutputFile& out) { out.write(report_text(report)); });
+             [&](OutputFile& out) { out.write(format_report(report, ReportFormat::text)); });
   write_file(folder / (part + ".report.json"), OutputKind::text,
-             [&](OutputFile& out) { out.write(report_json(report).dump(2) + "\n"); });
+             [&](OutputFile& out) { out.write(format_report(report, ReportFormat::json)); });
   write_histogram_if_asked(report, report_options);
   phases.done("stats");
 
@@ -160,13 +160,7 @@ void run_all(const RunOptions& options, CommandContext& context) {
   phases.done("colorize");
 
   OutputFile out("-", OutputKind::text);
-  if (options.format == "json") {
-    out.write(report_json(report).dump(2) + "\n");
-  } else if (options.format == "csv") {
-    out.write(report_csv_header() + report_csv_row(report));
-  } else {
-    out.write(report_text(report));
-  }
+  out.write(format_report(report, parse_report_format(options.format)));
   out.commit();
   phases.summary(options.timings, distances);
   spdlog::info("outputs in {}/", folder.string());

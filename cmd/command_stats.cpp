@@ -31,14 +31,7 @@ void run_stats(const StatsOptions& options, CommandContext& context) {
   const DistanceSet distances = read_distance_file(options.distances);
   const PartReport report = make_report(distances, options.report);
   OutputFile out(options.output, OutputKind::text);
-  if (options.format == "json") {
-    out.write(report_json(report).dump(2) + "\n");
-  } else if (options.format == "csv") {
-    if (!options.no_header) out.write(report_csv_header());
-    out.write(report_csv_row(report));
-  } else {
-    out.write(report_text(report));
-  }
+  out.write(format_report(report, parse_report_format(options.format), !options.no_header));
   out.commit();
   write_histogram_if_asked(report, options.report);
   context.exit_status = verdict_status(report);

@@ -4,6 +4,8 @@
 
 #include <filesystem>
 
+#include "error.hpp"
+
 namespace ncv {
 namespace {
 
@@ -217,6 +219,25 @@ std::string report_csv_row(const PartReport& r) {
     row += ",,,,,,,,,";
   }
   return row + "\n";
+}
+
+ReportFormat parse_report_format(const std::string& name) {
+  if (name == "json") return ReportFormat::json;
+  if (name == "csv") return ReportFormat::csv;
+  if (name == "text") return ReportFormat::text;
+  throw UsageError("unknown report format '" + name + "': use text, json or csv");
+}
+
+std::string format_report(const PartReport& r, ReportFormat format, bool csv_header) {
+  switch (format) {
+    case ReportFormat::json:
+      return report_json(r).dump(2) + "\n";
+    case ReportFormat::csv:
+      return (csv_header ? report_csv_header() : "") + report_csv_row(r);
+    case ReportFormat::text:
+      break;
+  }
+  return report_text(r);
 }
 
 int verdict_status(const PartReport& r) {

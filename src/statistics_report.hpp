@@ -30,6 +30,11 @@ std::string report_text(const PartReport& report);
 std::string report_csv_header();
 std::string report_csv_row(const PartReport& report);
 
+enum class ReportFormat { text, json, csv };
+ReportFormat parse_report_format(const std::string& name);  // "text", "json", "csv"
+// The whole report in one format; csv_header adds the CSV header line.
+std::string format_report(const PartReport& report, ReportFormat format, bool csv_header = true);
+
 // The exit status the verdict implies: 0 pass or no tolerance, 1 out of tolerance.
 int verdict_status(const PartReport& report);
 
