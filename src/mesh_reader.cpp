@@ -1,25 +1,18 @@
 #include "mesh_reader.hpp"
 
 #include <fmt/format.h>
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
 #include <algorithm>
 #include <cstring>
-#include <sstream>
 #include <string_view>
 
 #include "error.hpp"
 #include "input_bytes.hpp"
+#include "polygon_reader.hpp"
 #include "stl_reader.hpp"
 
 namespace ncv {
 namespace {
-
-struct DoublePointTraits : public OpenMesh::DefaultTraits {
-  using Point = OpenMesh::Vec3d;
-};
-using OpenMeshPolyMesh = OpenMesh::PolyMesh_ArrayKernelT<DoublePointTraits>;
 
 std::string_view leading_text(std::span<const char> bytes, std::size_t length) {
   return {bytes.data(), std::min(length, bytes.size())};
@@ -65,36 +58,6 @@ std::string known_non_mesh(std::span<const char> bytes) {
   return {};
 }
 
-Mesh read_with_openmesh(std::span<const char> bytes, const std::string& source,
-                        const std::string& extension) {
-  // OpenMesh prints parse complaints on its own streams; our message is the error.
-  ::omerr().disable();
-  ::omlog().disable();
-  ::omout().disable();
-  std::istringstream stream(std::string(bytes.data(), bytes.size()));
-  OpenMeshPolyMesh om;
-  OpenMesh::IO::Options options = OpenMesh::IO::Options::Default;
-  if (extension == ".ply" && !is_text(bytes)) options += OpenMesh::IO::Options::Binary;
-  if (!OpenMesh::IO::read_mesh(om, stream, extension, options)) {
-    throw InputError(source, fmt::format("could not be parsed as {} (malformed or truncated)",
-                                         extension.substr(1)));
-  }
-  Mesh mesh;
-  mesh.vertices.reserve(om.n_vertices());
-  for (const auto vh : om.vertices()) {
-    const auto& p = om.point(vh);
-    mesh.vertices.push_back({p[0], p[1], p[2]});
-  }
-  for (const auto fh : om.faces()) {
-    std::vector<std::uint32_t> corners;
-    for (const auto vh : om.fv_range(fh)) corners.push_back(static_cast<std::uint32_t>(vh.idx()));
-    for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
-      mesh.triangles.push_back({corners[0], corners[k], corners[k + 1]});
-    }
-  }
-  return mesh;
-}
-
 Mesh parse_by_content(std::span<const char> bytes, const std::string& source,
                       MeshReadReport& report) {
   if (bytes.empty()) throw InputError(source, "empty file, expected a mesh");
@@ -111,15 +74,15 @@ Mesh parse_by_content(std::span<const char> bytes, const std::string& source,
   }
   if (starts_with(bytes, "ply")) {
     report.format = MeshFormat::ply;
-    return read_with_openmesh(bytes, source, ".ply");
+    return parse_ply(bytes, source);
   }
   if (looks_like_off(bytes)) {
     report.format = MeshFormat::off;
-    return read_with_openmesh(bytes, source, ".off");
+    return parse_off(bytes, source);
   }
   if (looks_like_obj(bytes)) {
     report.format = MeshFormat::obj;
-    return read_with_openmesh(bytes, source, ".obj");
+    return parse_obj(bytes, source);
   }
   if (!is_text(bytes) && bytes.size() >= 84) {
     report.format = MeshFormat::stl_binary;

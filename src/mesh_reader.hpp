@@ -2,8 +2,8 @@
 // name: a binary STL whose 80-byte header starts with "solid" is still binary.
 //   STL binary and ASCII: parsed here (the hot path for large simulated workpieces),
 //     vertices welded by exact coordinate equality (-0 = +0), first-seen order.
-//   PLY, OBJ, OFF: parsed by OpenMesh; polygons are fan-triangulated. OpenMesh discards
-//     faces that repeat a vertex index (zero area, so no distance changes).
+//   PLY, OBJ, OFF: parsed strictly in double precision by polygon_reader (which says why
+//     not OpenMesh), the file's vertex indices kept, polygons fan-triangulated.
 // Every fault (empty, truncated, size mismatch, NaN/Inf, no triangles, not a mesh) throws
 // InputError naming the source.
 #pragma once
