@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <xxhash.h>
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 
@@ -231,15 +232,29 @@ void Container::parse_section_table(std::uint64_t data_start) {
   for (const auto& entry : table) {
     SectionEntry s;
     std::vector<std::uint64_t> shape;
+    bool counts_are_integers = false;
     try {
       s.name = entry.at("name").get<std::string>();
       s.dtype = entry.at("dtype").get<std::string>();
-      s.offset = entry.at("offset").get<std::uint64_t>();
-      s.bytes = entry.at("bytes").get<std::uint64_t>();
-      shape = entry.at("shape").get<std::vector<std::uint64_t>>();
+      // get<std::uint64_t>() converts any JSON number: a float beyond 2^64 is undefined
+      // behaviour (found by fuzz_distance_file), 64.5 would become 64. Only JSON's
+      // non-negative integers are offsets, sizes and dimensions.
+      const nlohmann::json& offset = entry.at("offset");
+      const nlohmann::json& bytes = entry.at("bytes");
+      const nlohmann::json& dimensions = entry.at("shape");
+      counts_are_integers =
+          offset.is_number_unsigned() && bytes.is_number_unsigned() && dimensions.is_array() &&
+          std::all_of(dimensions.begin(), dimensions.end(),
+                      [](const nlohmann::json& d) { return d.is_number_unsigned(); });
+      if (counts_are_integers) {
+        s.offset = offset.get<std::uint64_t>();
+        s.bytes = bytes.get<std::uint64_t>();
+        shape = dimensions.get<std::vector<std::uint64_t>>();
+      }
     } catch (const nlohmann::json::exception&) {
-      fail("malformed section table entry");
+      counts_are_integers = false;
     }
+    if (!counts_are_integers) fail("malformed section table entry");
     const std::size_t width = dtype_width(s.dtype);
     if (width == 0) fail(fmt::format("section '{}' has unknown dtype '{}'", s.name, s.dtype));
     if (s.offset < data_start || s.offset > data_end || s.bytes > data_end - s.offset ||

@@ -115,6 +115,7 @@ SampleSet load_sample_set(const Container& c) {
   validate_mesh(set.workpiece, c);
   if (!c.field("/workpiece/source").is_string()) c.fail("workpiece source is malformed");
   set.workpiece_source = c.field("/workpiece/source").get<std::string>();
+  if (!c.field("/workpiece/hash").is_string()) c.fail("workpiece hash is malformed");
   set.workpiece_hash = parse_hash_hex(c.field("/workpiece/hash").get<std::string>(), c);
   if (mesh_hash(set.workpiece) != set.workpiece_hash) c.fail("workpiece hash does not match");
   if (!c.field("/sampling/step").is_number() || !c.field("/sampling/step_spec").is_string() ||
