@@ -63,7 +63,10 @@ void write_distance_file(const DistanceSet& set, OutputFile& out) {
 }
 
 DistanceSet read_distance_file(const std::string& path) {
-  const Container c = Container::read(path, FileKind::distances, kDistancesFormatVersion);
+  return load_distance_set(Container::read(path, FileKind::distances, kDistancesFormatVersion));
+}
+
+DistanceSet load_distance_set(const Container& c) {
   DistanceSet set;
   set.samples = load_sample_set(c);
   const std::uint64_t S = set.samples.sample_count();

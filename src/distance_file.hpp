@@ -32,5 +32,7 @@ void write_distance_file(const DistanceSet& set, OutputFile& out);
 // Loads and validates a distance file: the sample sections as the samples file, distances
 // finite, closest faces within the nominal.
 DistanceSet read_distance_file(const std::string& path);
+// The same from a parsed container (read_distance_file's second half; the fuzz target's entry).
+DistanceSet load_distance_set(const Container& container);
 
 }  // namespace ncv

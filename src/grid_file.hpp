@@ -29,5 +29,7 @@ NominalGrid build_nominal_grid(Mesh mesh, const std::string& source, const GridO
 void write_grid_file(const NominalGrid& grid, const GridStatistics& statistics, OutputFile& out);
 // Loads and validates (hash, indices, grid consistency) a grid file.
 NominalGrid read_grid_file(const std::string& path);
+// The same from a parsed container (read_grid_file's second half; the fuzz target's entry).
+NominalGrid load_nominal_grid(const Container& container);
 
 }  // namespace ncv
