@@ -6,12 +6,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <memory>
 #include <numbers>
 #include <random>
 
 #include <tbb/global_control.h>
 
 #include "grid_builder.hpp"
+#include "mesh_reader.hpp"
+#include "sampling.hpp"
 #include "signed_distance.hpp"
 #include "winding_number.hpp"
 
@@ -87,6 +91,8 @@ void run_distances(benchmark::State& state, bool use_grid, const std::vector<Vec
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * count));
   state.counters["triangles/query"] = stats.triangles_per_query();
+  state.counters["considered/query"] =
+      static_cast<double>(stats.triangles_considered) / static_cast<double>(stats.queries);
   state.counters["cells/query"] =
       static_cast<double>(stats.cells_visited) / static_cast<double>(stats.queries);
 }
@@ -118,8 +124,54 @@ void BM_WindingTreeBuild(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(ncv::WindingNumberTree(s.nominal.corners()));
 }
 
+// The real finishing workload when NCV_BENCH_WORKPIECE and NCV_BENCH_NOMINAL name STL files
+// (scripts/bench.sh sets them): the workpiece sampled at 0.1 % against the nominal's grid.
+struct Workload {
+  std::unique_ptr<ncv::NominalSurface> nominal;
+  ncv::UniformGrid grid;
+  std::vector<Vec3> points;
+};
+
+const Workload* workload() {
+  static const std::unique_ptr<Workload> instance = []() -> std::unique_ptr<Workload> {
+    const char* workpiece = std::getenv("NCV_BENCH_WORKPIECE");
+    const char* nominal = std::getenv("NCV_BENCH_NOMINAL");
+    if (!workpiece || !nominal) return nullptr;
+    auto w = std::make_unique<Workload>();
+    w->nominal = std::make_unique<ncv::NominalSurface>(ncv::read_mesh(nominal), nominal);
+    w->grid = ncv::build_uniform_grid(*w->nominal);
+    ncv::Mesh mesh = ncv::read_mesh(workpiece);
+    const double step = 0.001 * ncv::bounding_box(mesh).diagonal();
+    w->points = ncv::sample_mesh(std::move(mesh), step, ncv::SamplingScheme::all).positions;
+    return w;
+  }();
+  return instance.get();
+}
+
+void BM_WorkloadGrid(benchmark::State& state) {
+  const Workload* w = workload();
+  if (!w) {
+    state.SkipWithError("NCV_BENCH_WORKPIECE / NCV_BENCH_NOMINAL not set");
+    return;
+  }
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
+                              static_cast<std::size_t>(state.range(0)));
+  ncv::SearchStatistics stats;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(ncv::compute_signed_distances(*w->nominal, &w->grid, w->points, {},
+                                                           ncv::SignMethod::pseudonormal, &stats));
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * w->points.size()));
+  state.counters["triangles/query"] = stats.triangles_per_query();
+  state.counters["considered/query"] =
+      static_cast<double>(stats.triangles_considered) / static_cast<double>(stats.queries);
+  state.counters["cells/query"] =
+      static_cast<double>(stats.cells_visited) / static_cast<double>(stats.queries);
+}
+
 }  // namespace
 
+BENCHMARK(BM_WorkloadGrid)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_GridPseudonormal)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_GridPseudonormalShuffled)
     ->Arg(1)

@@ -16,7 +16,38 @@ double max_abs(Vec3 v) {
   return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
 }
 
+float round_down(double x) {
+  const float f = static_cast<float>(x);
+  return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity())
+                                    : f;
+}
+
+float round_up(double x) {
+  const float f = static_cast<float>(x);
+  return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
+// Squared distance from q to the box, a lower bound of the squared distance to the triangle.
+double box_squared_distance(const TriangleBox& box, Vec3 q) {
+  const double gx = std::max(std::max(double{box.lo[0]} - q.x, q.x - double{box.hi[0]}), 0.0);
+  const double gy = std::max(std::max(double{box.lo[1]} - q.y, q.y - double{box.hi[1]}), 0.0);
+  const double gz = std::max(std::max(double{box.lo[2]} - q.z, q.z - double{box.hi[2]}), 0.0);
+  return gx * gx + gy * gy + gz * gz;
+}
+
 }  // namespace
+
+std::vector<TriangleBox> triangle_boxes(std::span<const TriangleCorners> triangles) {
+  std::vector<TriangleBox> boxes(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const TriangleCorners& c = triangles[t];
+    for (int axis = 0; axis < 3; ++axis) {
+      boxes[t].lo[axis] = round_down(std::min({c[0][axis], c[1][axis], c[2][axis]}));
+      boxes[t].hi[axis] = round_up(std::max({c[0][axis], c[1][axis], c[2][axis]}));
+    }
+  }
+  return boxes;
+}
 
 ClosestHit brute_force_closest(std::span<const TriangleCorners> triangles, Vec3 q,
                                SearchCounters& counters) {
@@ -28,6 +59,7 @@ ClosestHit brute_force_closest(std::span<const TriangleCorners> triangles, Vec3 
     }
   }
   counters.triangles_tested += triangles.size();
+  counters.triangles_considered += triangles.size();
   return best;
 }
 
@@ -45,8 +77,13 @@ struct GridSearch::Query {
   }
 };
 
-GridSearch::GridSearch(std::span<const TriangleCorners> triangles, const UniformGrid& grid)
-    : triangles_(triangles), grid_(grid), box_(grid.bounds()), stamps_(triangles.size(), 0) {
+GridSearch::GridSearch(std::span<const TriangleCorners> triangles, const UniformGrid& grid,
+                       std::span<const TriangleBox> boxes)
+    : triangles_(triangles),
+      grid_(grid),
+      boxes_(boxes),
+      box_(grid.bounds()),
+      stamps_(triangles.size(), 0) {
   scale_ = std::max(max_abs(box_.min), max_abs(box_.max));
 }
 
@@ -63,6 +100,11 @@ ClosestHit GridSearch::closest(Vec3 q, SearchCounters& counters) {
     const double index = std::floor((q[axis] - grid_.origin[axis]) / grid_.cell_size);
     query.centre[axis] = static_cast<std::int64_t>(std::clamp(index, 0.0, grid_.dims[axis] - 1.0));
   }
+  if (hint_ != kNoTriangle) {
+    stamps_[hint_] = epoch_;
+    ++counters.triangles_considered;
+    test(query, hint_);
+  }
   for (std::int64_t m = 0;; ++m) {
     for (int axis = 0; axis < 3; ++axis) {
       query.lo[axis] = std::max<std::int64_t>(0, query.centre[axis] - m);
@@ -71,6 +113,7 @@ ClosestHit GridSearch::closest(Vec3 q, SearchCounters& counters) {
     visit_shell(query, m);
     if (covers_grid(query) || unvisited_squared_distance(query) > query.bound_sq) break;
   }
+  hint_ = query.best.triangle;
   return query.best;
 }
 
@@ -108,13 +151,19 @@ void GridSearch::visit_cell(Query& query, std::uint64_t cell) {
     const std::uint32_t t = grid_.cell_triangles[r];
     if (stamps_[t] == epoch_) continue;
     stamps_[t] = epoch_;
-    ++query.counters->triangles_tested;
-    const TrianglePoint candidate = closest_point_on_triangle(query.q, triangles_[t]);
-    if (!improves(candidate.squared_distance, t, query.best)) continue;
-    query.best = {candidate.point, candidate.squared_distance, t, candidate.feature};
-    const double bound = std::sqrt(candidate.squared_distance) + query.margin;
-    query.bound_sq = bound * bound;
+    ++query.counters->triangles_considered;
+    if (box_squared_distance(boxes_[t], query.q) > query.bound_sq) continue;
+    test(query, t);
   }
+}
+
+void GridSearch::test(Query& query, std::uint32_t t) {
+  ++query.counters->triangles_tested;
+  const TrianglePoint candidate = closest_point_on_triangle(query.q, triangles_[t]);
+  if (!improves(candidate.squared_distance, t, query.best)) return;
+  query.best = {candidate.point, candidate.squared_distance, t, candidate.feature};
+  const double bound = std::sqrt(candidate.squared_distance) + query.margin;
+  query.bound_sq = bound * bound;
 }
 
 bool GridSearch::covers_grid(const Query& query) const {

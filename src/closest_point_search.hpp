@@ -23,6 +23,22 @@
 //
 // Each triangle is tested at most once per query (a per-searcher stamp per triangle), and
 // nothing is allocated per query: one GridSearch per thread.
+//
+// Two shortcuts make the bound tight early without changing the result; the result does
+// not depend on the order triangles are tested in, since `improves` is a strict total
+// order (distance, then index) and every triangle that could win is tested exactly:
+//  - The hint. The first triangle tested is the previous query's closest one (consecutive
+//    samples are neighbours), so the bound is near its final value before the first cell
+//    is read. forget_hint() drops it; the distance step does so at fixed block starts, so
+//    the counters do not depend on how blocks are spread over threads.
+//  - The box prefilter. Before the exact kernel, a triangle is skipped when the distance
+//    from q to its bounding box (float corners rounded outward, so the box contains the
+//    triangle; the distance computed in double) exceeds the bound best + margin. The box
+//    distance is a lower bound of the triangle's, computed with rounding of a few ulps of
+//    the coordinate scale, so by the argument above the kernel's value for a skipped
+//    triangle would be strictly greater than best: skipping it cannot change the result.
+// SearchCounters::triangles_tested counts exact kernel evaluations only (the paper's
+// Table 2 statistic); triangles_considered also counts those the box prefilter rejected.
 #pragma once
 
 #include <cstdint>
@@ -45,8 +61,9 @@ struct ClosestHit {
 };
 
 struct SearchCounters {
-  std::uint64_t triangles_tested = 0;
-  std::uint64_t cells_visited = 0;  // cells whose lists were read
+  std::uint64_t triangles_tested = 0;      // exact point-triangle computations
+  std::uint64_t triangles_considered = 0;  // distinct triangles reached: tested + box-rejected
+  std::uint64_t cells_visited = 0;         // cells whose lists were read
 };
 
 // The one ordering of candidates: nearer wins, then the lower triangle index.
@@ -55,29 +72,44 @@ inline bool improves(double squared_distance, std::uint32_t triangle, const Clos
          (squared_distance == best.squared_distance && triangle < best.triangle);
 }
 
+// A triangle's bounding box in float, rounded outward so that it contains the triangle.
+struct TriangleBox {
+  float lo[3];
+  float hi[3];
+};
+
+std::vector<TriangleBox> triangle_boxes(std::span<const TriangleCorners> triangles);
+
 ClosestHit brute_force_closest(std::span<const TriangleCorners> triangles, Vec3 q,
                                SearchCounters& counters);
 
 class GridSearch {
  public:
-  // The grid must have been built for (or validated against) these triangles.
-  GridSearch(std::span<const TriangleCorners> triangles, const UniformGrid& grid);
+  // The grid must have been built for (or validated against) these triangles, and `boxes`
+  // be triangle_boxes(triangles) (shared by the searchers of all threads).
+  GridSearch(std::span<const TriangleCorners> triangles, const UniformGrid& grid,
+             std::span<const TriangleBox> boxes);
 
   ClosestHit closest(Vec3 q, SearchCounters& counters);
+  // The next query starts without the previous one's closest triangle.
+  void forget_hint() { hint_ = kNoTriangle; }
 
  private:
   struct Query;
   void visit_shell(Query& query, std::int64_t m);
   void visit_cell(Query& query, std::uint64_t cell);
+  void test(Query& query, std::uint32_t t);
   bool covers_grid(const Query& query) const;
   double unvisited_squared_distance(const Query& query) const;
 
   std::span<const TriangleCorners> triangles_;
   const UniformGrid& grid_;
+  std::span<const TriangleBox> boxes_;
   BoundingBox box_;
   double scale_ = 0;
   std::vector<std::uint32_t> stamps_;
   std::uint32_t epoch_ = 0;
+  std::uint32_t hint_ = kNoTriangle;
 };
 
 }  // namespace ncv

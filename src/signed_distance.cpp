@@ -1,5 +1,6 @@
 #include "signed_distance.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <memory>
@@ -17,6 +18,8 @@
 namespace ncv {
 namespace {
 
+// Points are measured in fixed blocks of kBlockSize (the last one shorter); each block
+// starts without a search hint, so the counters do not depend on the thread count.
 constexpr std::size_t kBlockSize = 512;
 
 void check_inputs(std::span<const Vec3> points, std::span<const Vec3> sample_normals,
@@ -51,12 +54,14 @@ class SignedDistanceJob {
       : nominal_(nominal), grid_(grid), points_(points), normals_(normals), method_(method) {
     if (method_ == SignMethod::winding)
       tree_ = std::make_unique<WindingNumberTree>(nominal.corners());
+    if (grid_) boxes_ = triangle_boxes(nominal.corners());
   }
 
   void run(DistanceField& field, std::size_t begin, std::size_t end) {
     Worker& worker = workers_.local();
-    if (grid_ && !worker.search) worker.search.emplace(nominal_.corners(), *grid_);
+    if (grid_ && !worker.search) worker.search.emplace(nominal_.corners(), *grid_, boxes_);
     for (std::size_t i = begin; i < end; ++i) {
+      if (worker.search && i % kBlockSize == 0) worker.search->forget_hint();
       const Vec3 p = nominal_.to_local(points_[i]);
       const ClosestHit hit = worker.search
                                  ? worker.search->closest(p, worker.counters)
@@ -71,6 +76,7 @@ class SignedDistanceJob {
     SearchCounters total;
     for (const Worker& worker : workers_) {
       total.triangles_tested += worker.counters.triangles_tested;
+      total.triangles_considered += worker.counters.triangles_considered;
       total.cells_visited += worker.counters.cells_visited;
     }
     return total;
@@ -110,6 +116,7 @@ class SignedDistanceJob {
   std::span<const Vec3> normals_;
   SignMethod method_;
   std::unique_ptr<WindingNumberTree> tree_;
+  std::vector<TriangleBox> boxes_;
   tbb::enumerable_thread_specific<Worker> workers_;
 };
 
@@ -135,10 +142,13 @@ DistanceField compute_signed_distances(const NominalSurface& nominal, const Unif
                         resolve_sign_method(nominal, method));
   const std::thread::id caller = std::this_thread::get_id();
   std::atomic<std::size_t> done{0};
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kBlockSize),
-                    [&](const tbb::blocked_range<std::size_t>& block) {
-                      job.run(field, block.begin(), block.end());
-                      const std::size_t finished = done += block.size();
+  const std::size_t blocks = (n + kBlockSize - 1) / kBlockSize;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      const std::size_t begin = range.begin() * kBlockSize;
+                      const std::size_t end = std::min(n, range.end() * kBlockSize);
+                      job.run(field, begin, end);
+                      const std::size_t finished = done += end - begin;
                       if (progress && std::this_thread::get_id() == caller) progress(finished, n);
                     });
   if (progress) progress(n, n);
@@ -147,6 +157,7 @@ DistanceField compute_signed_distances(const NominalSurface& nominal, const Unif
     const SearchCounters counters = job.counters();
     statistics->queries = n;
     statistics->triangles_tested = counters.triangles_tested;
+    statistics->triangles_considered = counters.triangles_considered;
     statistics->cells_visited = counters.cells_visited;
   }
   return field;

@@ -17,7 +17,7 @@
 //   paper         the sample's own normal N_p: positive when N_p . (p - c) > 0.
 //   automatic     the nominal's choice (NominalSurface::automatic_sign_method).
 //
-// Parallel over blocks of points with oneTBB. Every value of a point is computed on its own
+// Parallel over fixed blocks of points with oneTBB. Every value of a point is computed on its own
 // and the statistics are integer sums, so the output does not depend on the thread count.
 #pragma once
 
@@ -40,8 +40,9 @@ struct DistanceField {
 
 struct SearchStatistics {
   std::uint64_t queries = 0;
-  std::uint64_t triangles_tested = 0;  // the paper's Table 2 statistic, summed
-  std::uint64_t cells_visited = 0;     // 0 for brute force
+  std::uint64_t triangles_tested = 0;      // exact tests: the paper's Table 2 statistic, summed
+  std::uint64_t triangles_considered = 0;  // also those the box prefilter rejected
+  std::uint64_t cells_visited = 0;         // 0 for brute force
 
   double triangles_per_query() const {
     return queries ? static_cast<double>(triangles_tested) / static_cast<double>(queries) : 0.0;
