@@ -1,0 +1,37 @@
+// Distance files (kind DIST) as `stats` and `colorize` read them: Container::parse,
+// load_distance_set, then the report (statistics, histogram, regions, text, JSON and CSV)
+// and the coloured PLY of both the workpiece and the lattice, which trust what the loader
+// accepted.
+#include <sstream>
+
+#include "color_map.hpp"
+#include "container.hpp"
+#include "distance_file.hpp"
+#include "error_mesh.hpp"
+#include "fuzz_support.hpp"
+#include "ply_writer.hpp"
+#include "statistics_report.hpp"
+
+namespace {
+
+void read_distances(std::vector<char> bytes) {
+  const ncv::Container c = ncv::Container::parse(
+      std::move(bytes), "fuzz.dist", ncv::FileKind::distances, ncv::kDistancesFormatVersion);
+  const ncv::DistanceSet set = ncv::load_distance_set(c);
+  const ncv::Tolerance tolerance{-0.05, 0.1};
+  const ncv::PartReport report = ncv::make_part_report(set, tolerance, ncv::HistogramOptions{});
+  std::ostringstream out;
+  out << ncv::report_text(report) << ncv::report_json(report).dump() << ncv::report_csv_row(report);
+  const ncv::ColorMap map = ncv::make_color_map(ncv::ColorMapKind::tolerance, {-1, 1}, tolerance);
+  ncv::write_error_ply(out, ncv::workpiece_error_mesh(set.samples, set.field.distance), map);
+  ncv::write_error_ply(out, ncv::lattice_error_mesh(set.samples, set.field.distance), map);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  ncv::fuzz::quiet_and_serial();
+  ncv::fuzz::accepts([&] { read_distances(std::vector<char>(data, data + size)); });
+  ncv::fuzz::accepts([&] { read_distances(ncv::fuzz::sealed_container(data, size)); });
+  return 0;
+}

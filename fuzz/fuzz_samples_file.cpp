@@ -1,0 +1,25 @@
+// Samples files (kind SMPL) as `distance` reads them: Container::parse, load_sample_set,
+// then the per-sample normals the paper's sign rule computes from the loaded lattice.
+#include "container.hpp"
+#include "fuzz_support.hpp"
+#include "sample_normals.hpp"
+#include "samples_file.hpp"
+
+namespace {
+
+void read_samples(std::vector<char> bytes) {
+  const ncv::Container c = ncv::Container::parse(
+      std::move(bytes), "fuzz.samples", ncv::FileKind::samples, ncv::kSamplesFormatVersion);
+  const ncv::SampleSet set = ncv::load_sample_set(c);
+  const std::vector<ncv::Vec3> normals = ncv::sample_normals(set);
+  if (normals.size() != set.sample_count()) __builtin_trap();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  ncv::fuzz::quiet_and_serial();
+  ncv::fuzz::accepts([&] { read_samples(std::vector<char>(data, data + size)); });
+  ncv::fuzz::accepts([&] { read_samples(ncv::fuzz::sealed_container(data, size)); });
+  return 0;
+}
