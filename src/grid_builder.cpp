@@ -190,40 +190,54 @@ Layout choose_layout(const NominalSurface& nominal, double h, GridStatistics& st
   }
 }
 
-// Triangle-major references: the cells of triangle t, ascending candidate order, at
-// first[t] .. first[t + 1].
-std::vector<std::uint32_t> touched_cells(const NominalSurface& nominal, const Layout& layout,
-                                         std::vector<std::uint64_t>& first) {
+// Triangle-major references in fixed chunks of triangles (so the result does not depend on
+// the thread count): chunk c holds, for its triangles in order, the cells each touches in
+// ascending candidate order, and how many. One exact test per candidate.
+struct ReferenceChunk {
+  std::vector<std::uint32_t> cells;
+  std::vector<std::uint32_t> counts;  // per triangle of the chunk
+};
+
+constexpr std::size_t kChunkTriangles = 4096;
+
+std::vector<ReferenceChunk> touched_cells(const NominalSurface& nominal, const Layout& layout) {
   const std::size_t triangles = nominal.triangle_count();
-  first.assign(triangles + 1, 0);
-  tbb::parallel_for(std::size_t{0}, triangles, [&](std::size_t t) {
-    std::uint64_t count = 0;
-    for_each_touched_cell(layout, nominal.corners(t), [&](std::uint64_t) { ++count; });
-    first[t + 1] = count;
+  std::vector<ReferenceChunk> chunks((triangles + kChunkTriangles - 1) / kChunkTriangles);
+  tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
+    ReferenceChunk& chunk = chunks[c];
+    const std::size_t end = std::min(triangles, (c + 1) * kChunkTriangles);
+    chunk.counts.reserve(end - c * kChunkTriangles);
+    for (std::size_t t = c * kChunkTriangles; t < end; ++t) {
+      const std::size_t before = chunk.cells.size();
+      for_each_touched_cell(layout, nominal.corners(t), [&](std::uint64_t cell) {
+        chunk.cells.push_back(static_cast<std::uint32_t>(cell));
+      });
+      chunk.counts.push_back(static_cast<std::uint32_t>(chunk.cells.size() - before));
+    }
+    chunk.cells.shrink_to_fit();
   });
-  std::partial_sum(first.begin(), first.end(), first.begin());
-  std::vector<std::uint32_t> cells(first.back());
-  tbb::parallel_for(std::size_t{0}, triangles, [&](std::size_t t) {
-    std::uint64_t at = first[t];
-    for_each_touched_cell(layout, nominal.corners(t), [&](std::uint64_t cell) {
-      cells[at++] = static_cast<std::uint32_t>(cell);
-    });
-  });
-  return cells;
+  return chunks;
 }
 
 // Counting sort of the references by cell; scanning triangles in order keeps every cell's
 // list ascending.
-void fill_cell_lists(UniformGrid& grid, const std::vector<std::uint32_t>& cells,
-                     const std::vector<std::uint64_t>& first) {
+void fill_cell_lists(UniformGrid& grid, const std::vector<ReferenceChunk>& chunks) {
   grid.cell_offsets.assign(grid.cell_count() + 1, 0);
-  for (std::uint32_t cell : cells) ++grid.cell_offsets[cell + 1];
+  std::uint64_t references = 0;
+  for (const ReferenceChunk& chunk : chunks) {
+    for (std::uint32_t cell : chunk.cells) ++grid.cell_offsets[cell + 1];
+    references += chunk.cells.size();
+  }
   std::partial_sum(grid.cell_offsets.begin(), grid.cell_offsets.end(), grid.cell_offsets.begin());
   std::vector<std::uint64_t> cursor(grid.cell_offsets.begin(), grid.cell_offsets.end() - 1);
-  grid.cell_triangles.resize(cells.size());
-  for (std::size_t t = 0; t + 1 < first.size(); ++t) {
-    for (std::uint64_t r = first[t]; r < first[t + 1]; ++r) {
-      grid.cell_triangles[cursor[cells[r]]++] = static_cast<std::uint32_t>(t);
+  grid.cell_triangles.resize(references);
+  std::uint32_t t = 0;
+  for (const ReferenceChunk& chunk : chunks) {
+    std::size_t r = 0;
+    for (std::uint32_t count : chunk.counts) {
+      for (std::uint32_t k = 0; k < count; ++k, ++r)
+        grid.cell_triangles[cursor[chunk.cells[r]]++] = t;
+      ++t;
     }
   }
 }
@@ -271,9 +285,7 @@ UniformGrid build_uniform_grid(const NominalSurface& nominal, const GridOptions&
   grid.origin = layout.origin;
   grid.cell_size = layout.h;
   grid.dims = layout.dims;
-  std::vector<std::uint64_t> first;
-  const std::vector<std::uint32_t> cells = touched_cells(nominal, layout, first);
-  fill_cell_lists(grid, cells, first);
+  fill_cell_lists(grid, touched_cells(nominal, layout));
   summarise(grid, nominal.triangle_count(), stats);
   if (statistics) *statistics = stats;
   return grid;

@@ -21,8 +21,9 @@
 // exact test only removes candidates, so the bound is strict, and building costs at most
 // two exact tests per allowed reference. The grid then never takes more than
 // 8 * 8 T + 4 * 16 T = 128 bytes per triangle (offsets of 8 bytes, references of 4), and
-// the build at most 136 bytes per triangle more while it runs (the references once more
-// plus a cursor per cell and an offset per triangle). The same bounds apply to a cell size
+// the build at most 132 bytes per triangle more while it runs (the references once more, in
+// per-chunk vectors trimmed when done, a count per triangle and a cursor per cell), plus
+// one growing chunk of 4096 triangles per thread. One exact test per candidate cell. The same bounds apply to a cell size
 // given as an option; GridStatistics says when it grew.
 //
 // Parallel over triangles with oneTBB; the result does not depend on the thread count.
