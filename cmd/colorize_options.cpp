@@ -8,6 +8,7 @@
 
 #include "color_map.hpp"
 #include "error_mesh.hpp"
+#include "option_checks.hpp"
 #include "output_file.hpp"
 #include "ply_writer.hpp"
 #include "report_options.hpp"
@@ -62,7 +63,8 @@ void add_colorize_options(CLI::App& sub, ColorizeOptions& options) {
                  "(blue-white-red) or turbo; default: tolerance when --tol is given")
       ->check(CLI::IsMember({"tolerance", "diverging", "turbo"}));
   sub.add_option("--range", options.range,
-                 "Values the colour map spans, LO:HI or R for ±R (default: from the data)");
+                 "Values the colour map spans, LO:HI or R for ±R (default: from the data)")
+      ->check(valid_zone());
   sub.add_flag("--refine", options.refine,
                "Write the sampling lattice as the mesh, so every sample's error shows");
   sub.add_option("--legend", options.legend_svg, "Also write the colour bar as SVG");

@@ -6,6 +6,7 @@
 #include "command_options.hpp"
 #include "commands.hpp"
 #include "distance_file.hpp"
+#include "option_checks.hpp"
 
 namespace ncv::cmd {
 namespace {
@@ -32,7 +33,8 @@ void add_colorize_command(CLI::App& app, CommandContext&) {
   add_output_option(*sub, options->output, "PLY file (default: DIST stem + .ply)");
   add_colorize_options(*sub, options->colorize);
   sub->add_option("-t,--tol", options->colorize.tolerance,
-                  "Tolerance zone LOWER:UPPER or T (selects the tolerance colour map)");
+                  "Tolerance zone LOWER:UPPER or T (selects the tolerance colour map)")
+      ->check(valid_zone());
   sub->callback([options] { run_colorize(*options); });
 }
 

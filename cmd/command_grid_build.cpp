@@ -7,6 +7,7 @@
 #include "input_bytes.hpp"
 #include "memory_guard.hpp"
 #include "mesh_reader.hpp"
+#include "option_checks.hpp"
 #include "stopwatch.hpp"
 
 namespace ncv::cmd {
@@ -60,7 +61,8 @@ void add_grid_build_command(CLI::App& app, CommandContext&) {
   add_output_option(*sub, options->output, "Grid file (default: NOMINAL stem + .grid)");
   sub->add_option("--cell", options->cell_size,
                   "Cell edge in model units (default: the edge of the equilateral triangle of "
-                  "the mean nominal triangle area)");
+                  "the mean nominal triangle area)")
+      ->check(valid_positive_length());
   sub->callback([options] { run_grid_build(*options); });
 }
 

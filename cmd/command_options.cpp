@@ -8,6 +8,7 @@
 #include "error.hpp"
 #include "input_bytes.hpp"
 #include "memory_guard.hpp"
+#include "option_checks.hpp"
 #include "samples_file.hpp"
 #include "sampling_step.hpp"
 #include "stopwatch.hpp"
@@ -62,6 +63,7 @@ void add_output_option(CLI::App& sub, std::string& output, const std::string& de
 void add_sampling_options(CLI::App& sub, SamplingOptions& options) {
   sub.add_option("-s,--step", options.step,
                  "Sampling step: model units (0.05) or % of the bounding-box diagonal (0.1%)")
+      ->check(valid_step())
       ->capture_default_str();
   sub.add_option("--scheme", options.scheme,
                  "all: tiny triangles give their vertices (paper scheme I); paper-ii: they are "

@@ -12,6 +12,7 @@
 #include "input_bytes.hpp"
 #include "memory_guard.hpp"
 #include "mesh_reader.hpp"
+#include "option_checks.hpp"
 #include "report_options.hpp"
 #include "samples_file.hpp"
 #include "stopwatch.hpp"
@@ -178,7 +179,8 @@ void add_run_command(CLI::App& app, CommandContext& context) {
   sub->add_option("-d,--dir", options->folder,
                   "Output folder (default: WORKPIECE stem + .ncverify)");
   add_sampling_options(*sub, options->sampling);
-  sub->add_option("--cell", options->cell_size, "Grid cell edge in model units");
+  sub->add_option("--cell", options->cell_size, "Grid cell edge in model units")
+      ->check(valid_positive_length());
   add_distance_options(*sub, options->distance);
   add_report_options(*sub, options->report);
   add_colorize_options(*sub, options->colorize);

@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
   app.add_option("-j,--threads", threads,
                  "Worker threads (default: all cores); results do not "
                  "depend on it")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, 4096));  // NonNegativeNumber's message prints DBL_MAX in full
   std::unique_ptr<tbb::global_control> thread_limit;
   app.add_flag("-q,--quiet", quiet, "Only warnings and errors on standard error");
   app.add_flag("-v,--verbose", verbose, "More detail on standard error");
@@ -49,8 +49,12 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int status = app.exit(e);
-    return status == 0 ? 0 : cmd::kExitBadInput;
+    // --help and --version print their text and succeed. Any other parse error is bad
+    // usage: one line on stderr like every other error (CLI11's own report adds a second).
+    if (e.get_exit_code() == 0) return app.exit(e);
+    setup_logging(Verbosity::normal);
+    spdlog::error("{} (see --help)", e.what());
+    return cmd::kExitBadInput;
   } catch (const InputError& e) {
     spdlog::error("{}", e.what());
     return cmd::kExitBadInput;

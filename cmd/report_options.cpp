@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "option_checks.hpp"
 #include "output_file.hpp"
 #include "svg_histogram.hpp"
 
@@ -9,10 +10,12 @@ namespace ncv::cmd {
 
 void add_report_options(CLI::App& sub, ReportOptions& options) {
   sub.add_option("-t,--tol", options.tolerance,
-                 "Tolerance zone LOWER:UPPER (e.g. -0.05:0.1), or T for ±T; out of it, exit 1");
+                 "Tolerance zone LOWER:UPPER (e.g. -0.05:0.1), or T for ±T; out of it, exit 1")
+      ->check(valid_zone());
   sub.add_option("--bins", options.bins, "Histogram bins")->capture_default_str();
   sub.add_option("--histogram-range", options.range,
-                 "Histogram range LO:HI (default: d_min to d_max)");
+                 "Histogram range LO:HI (default: d_min to d_max)")
+      ->check(valid_zone());
   sub.add_option("--regions", options.regions, "Out-of-tolerance regions listed")
       ->capture_default_str();
   sub.add_option("--histogram-svg", options.histogram_svg,

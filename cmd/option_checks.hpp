@@ -1,0 +1,15 @@
+// CLI11 validators for the option values ncverify parses itself. A step, a tolerance zone,
+// a range or a cell size that does not parse is refused while the command line is read,
+// before any input is read or output written: `run` used to sample, build the grid and
+// measure (and leave three files behind) before it looked at its --tol.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace ncv::cmd {
+
+CLI::Validator valid_step();             // --step: SamplingStep::parse
+CLI::Validator valid_zone();             // --tol, --range, --histogram-range: parse_tolerance
+CLI::Validator valid_positive_length();  // --cell: a finite length above zero
+
+}  // namespace ncv::cmd
