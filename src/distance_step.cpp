@@ -1,9 +1,11 @@
 #include "distance_step.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
 
+#include "error.hpp"
 #include "progress.hpp"
 #include "sample_normals.hpp"
 #include "stopwatch.hpp"
@@ -26,9 +28,29 @@ double overlap_share(const BoundingBox& a, const BoundingBox& b) {
   return inter / std::min(va, vb);
 }
 
-void warn_if_apart(const SampleSet& samples, const NominalGrid& grid) {
+// What the two files' geometry can tell about whether they belong together. Certain: a
+// workpiece whose every point is farther from the nominal than the size of either part is
+// not a machining of it in its frame; no tolerance verdict on it means anything, and an
+// "out of tolerance" would send someone to rework a part that was never measured, so it is
+// refused. Only suspicious (warned, measured anyway): little overlap, no overlap at close
+// range, very different sizes, or the nominal itself given as the workpiece (zero
+// everywhere; a legitimate self-check, a mix-up otherwise).
+void check_belong_together(const SampleSet& samples, const NominalGrid& grid) {
   const BoundingBox workpiece = bounding_box(samples.workpiece);
   const BoundingBox nominal = bounding_box(grid.mesh);
+  const double gap = box_gap(workpiece, nominal);
+  const double size = std::max(workpiece.diagonal(), nominal.diagonal());
+  if (gap > size) {
+    throw InputError(samples.workpiece_source,
+                     fmt::format("the workpiece lies {:.6g} from the nominal {}, farther than "
+                                 "the size of either part ({:.6g}): they do not belong together "
+                                 "(a wrong file or coordinate frame?)",
+                                 gap, grid.nominal_source, size));
+  }
+  if (samples.workpiece_hash == grid.nominal_hash) {
+    spdlog::warn("the workpiece ({}) is the nominal ({}) itself: every distance is zero",
+                 samples.workpiece_source, grid.nominal_source);
+  }
   const double share = overlap_share(workpiece, nominal);
   if (share < 0.5) {
     spdlog::warn(
@@ -46,7 +68,7 @@ void warn_if_apart(const SampleSet& samples, const NominalGrid& grid) {
 
 DistanceSet measure_distances(SampleSet samples, const NominalGrid& grid,
                               const DistanceStepOptions& options, double* seconds) {
-  warn_if_apart(samples, grid);
+  check_belong_together(samples, grid);
   const SignMethod method = resolve_sign_method(*grid.nominal, options.sign);
   const std::vector<Vec3> normals =
       method == SignMethod::paper ? sample_normals(samples) : std::vector<Vec3>{};

@@ -13,8 +13,10 @@ struct DistanceStepOptions {
   bool brute_force = false;  // test every nominal triangle (the reference), no grid
 };
 
-// Warns when the workpiece and the nominal barely overlap (a wrong file or unit), then
-// measures every sample; `seconds` receives the time the measuring took.
+// Refuses (InputError) a workpiece farther from the nominal than the size of either part,
+// warns when they barely overlap, differ in size five times or are the same mesh (a wrong
+// file, unit or frame?), then measures every sample; `seconds` receives the time the
+// measuring took.
 DistanceSet measure_distances(SampleSet samples, const NominalGrid& grid,
                               const DistanceStepOptions& options, double* seconds = nullptr);
 // Samples per second, triangles tested per sample and the sign method, on stderr.
