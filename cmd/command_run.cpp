@@ -111,6 +111,8 @@ void run_all(const RunOptions& options, CommandContext& context) {
 
   Mesh workpiece = read_mesh(options.workpiece);
   Mesh nominal = read_mesh(options.nominal);
+  refuse_if_apart(bounding_box(workpiece), input_name(options.workpiece), bounding_box(nominal),
+                  input_name(options.nominal));
   phases.done("read");
 
   SampledWorkpiece sampled =

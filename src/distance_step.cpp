@@ -38,15 +38,7 @@ double overlap_share(const BoundingBox& a, const BoundingBox& b) {
 void check_belong_together(const SampleSet& samples, const NominalGrid& grid) {
   const BoundingBox workpiece = bounding_box(samples.workpiece);
   const BoundingBox nominal = bounding_box(grid.mesh);
-  const double gap = box_gap(workpiece, nominal);
-  const double size = std::max(workpiece.diagonal(), nominal.diagonal());
-  if (gap > size) {
-    throw InputError(samples.workpiece_source,
-                     fmt::format("the workpiece lies {:.6g} from the nominal {}, farther than "
-                                 "the size of either part ({:.6g}): they do not belong together "
-                                 "(a wrong file or coordinate frame?)",
-                                 gap, grid.nominal_source, size));
-  }
+  refuse_if_apart(workpiece, samples.workpiece_source, nominal, grid.nominal_source);
   if (samples.workpiece_hash == grid.nominal_hash) {
     spdlog::warn("the workpiece ({}) is the nominal ({}) itself: every distance is zero",
                  samples.workpiece_source, grid.nominal_source);
@@ -65,6 +57,19 @@ void check_belong_together(const SampleSet& samples, const NominalGrid& grid) {
 }
 
 }  // namespace
+
+void refuse_if_apart(const BoundingBox& workpiece, const std::string& workpiece_source,
+                     const BoundingBox& nominal, const std::string& nominal_source) {
+  const double gap = box_gap(workpiece, nominal);
+  const double size = std::max(workpiece.diagonal(), nominal.diagonal());
+  if (gap > size) {
+    throw InputError(workpiece_source,
+                     fmt::format("the workpiece lies {:.6g} from the nominal {}, farther than "
+                                 "the size of either part ({:.6g}): they do not belong together "
+                                 "(a wrong file or coordinate frame?)",
+                                 gap, nominal_source, size));
+  }
+}
 
 DistanceSet measure_distances(SampleSet samples, const NominalGrid& grid,
                               const DistanceStepOptions& options, double* seconds) {

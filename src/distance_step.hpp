@@ -17,6 +17,10 @@ struct DistanceStepOptions {
 // warns when they barely overlap, differ in size five times or are the same mesh (a wrong
 // file, unit or frame?), then measures every sample; `seconds` receives the time the
 // measuring took.
+// The refusal above on its own, from the two meshes' bounding boxes, so that `run` can
+// refuse before sampling; throws InputError naming the workpiece source.
+void refuse_if_apart(const BoundingBox& workpiece, const std::string& workpiece_source,
+                     const BoundingBox& nominal, const std::string& nominal_source);
 DistanceSet measure_distances(SampleSet samples, const NominalGrid& grid,
                               const DistanceStepOptions& options, double* seconds = nullptr);
 // Samples per second, triangles tested per sample and the sign method, on stderr.
