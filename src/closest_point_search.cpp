@@ -37,13 +37,14 @@ double box_squared_distance(const TriangleBox& box, Vec3 q) {
 
 }  // namespace
 
-std::vector<TriangleBox> triangle_boxes(std::span<const TriangleCorners> triangles) {
-  std::vector<TriangleBox> boxes(triangles.size());
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    const TriangleCorners& c = triangles[t];
+std::vector<TriangleBox> reference_boxes(std::span<const TriangleCorners> triangles,
+                                         const UniformGrid& grid) {
+  std::vector<TriangleBox> boxes(grid.cell_triangles.size());
+  for (std::size_t r = 0; r < boxes.size(); ++r) {
+    const TriangleCorners& c = triangles[grid.cell_triangles[r]];
     for (int axis = 0; axis < 3; ++axis) {
-      boxes[t].lo[axis] = round_down(std::min({c[0][axis], c[1][axis], c[2][axis]}));
-      boxes[t].hi[axis] = round_up(std::max({c[0][axis], c[1][axis], c[2][axis]}));
+      boxes[r].lo[axis] = round_down(std::min({c[0][axis], c[1][axis], c[2][axis]}));
+      boxes[r].hi[axis] = round_up(std::max({c[0][axis], c[1][axis], c[2][axis]}));
     }
   }
   return boxes;
@@ -85,6 +86,7 @@ GridSearch::GridSearch(std::span<const TriangleCorners> triangles, const Uniform
       box_(grid.bounds()),
       stamps_(triangles.size(), 0) {
   scale_ = std::max(max_abs(box_.min), max_abs(box_.max));
+  inverse_cell_ = 1.0 / grid.cell_size;
 }
 
 ClosestHit GridSearch::closest(Vec3 q, SearchCounters& counters) {
@@ -97,7 +99,9 @@ ClosestHit GridSearch::closest(Vec3 q, SearchCounters& counters) {
   query.counters = &counters;
   query.margin = kMarginScale * std::max(scale_, max_abs(q));
   for (int axis = 0; axis < 3; ++axis) {
-    const double index = std::floor((q[axis] - grid_.origin[axis]) / grid_.cell_size);
+    // Any start cell gives the exact result (the stopping rule uses the visited box and
+    // exact cell bounds), so a product by the inverse is as good as the quotient.
+    const double index = std::floor((q[axis] - grid_.origin[axis]) * inverse_cell_);
     query.centre[axis] = static_cast<std::int64_t>(std::clamp(index, 0.0, grid_.dims[axis] - 1.0));
   }
   if (hint_ != kNoTriangle) {
@@ -105,7 +109,17 @@ ClosestHit GridSearch::closest(Vec3 q, SearchCounters& counters) {
     ++counters.triangles_considered;
     test(query, hint_);
   }
-  for (std::int64_t m = 0;; ++m) {
+  // Shell 0 is the start cell alone; visiting it whatever its distance is always safe.
+  query.lo = query.centre;
+  query.hi = query.centre;
+  visit_cell(query, grid_.cell_index(static_cast<std::uint32_t>(query.centre[0]),
+                                     static_cast<std::uint32_t>(query.centre[1]),
+                                     static_cast<std::uint32_t>(query.centre[2])));
+  if (covers_grid(query) || unvisited_squared_distance(query) > query.bound_sq) {
+    hint_ = query.best.triangle;
+    return query.best;
+  }
+  for (std::int64_t m = 1;; ++m) {
     for (int axis = 0; axis < 3; ++axis) {
       query.lo[axis] = std::max<std::int64_t>(0, query.centre[axis] - m);
       query.hi[axis] = std::min<std::int64_t>(grid_.dims[axis] - 1, query.centre[axis] + m);
@@ -147,12 +161,12 @@ void GridSearch::visit_shell(Query& query, std::int64_t m) {
 void GridSearch::visit_cell(Query& query, std::uint64_t cell) {
   ++query.counters->cells_visited;
   const std::uint64_t end = grid_.cell_offsets[cell + 1];
+  query.counters->triangles_considered += end - grid_.cell_offsets[cell];
   for (std::uint64_t r = grid_.cell_offsets[cell]; r < end; ++r) {
+    if (box_squared_distance(boxes_[r], query.q) > query.bound_sq) continue;
     const std::uint32_t t = grid_.cell_triangles[r];
     if (stamps_[t] == epoch_) continue;
     stamps_[t] = epoch_;
-    ++query.counters->triangles_considered;
-    if (box_squared_distance(boxes_[t], query.q) > query.bound_sq) continue;
     test(query, t);
   }
 }

@@ -31,14 +31,17 @@
 //    samples are neighbours), so the bound is near its final value before the first cell
 //    is read. forget_hint() drops it; the distance step does so at fixed block starts, so
 //    the counters do not depend on how blocks are spread over threads.
-//  - The box prefilter. Before the exact kernel, a triangle is skipped when the distance
-//    from q to its bounding box (float corners rounded outward, so the box contains the
-//    triangle; the distance computed in double) exceeds the bound best + margin. The box
-//    distance is a lower bound of the triangle's, computed with rounding of a few ulps of
-//    the coordinate scale, so by the argument above the kernel's value for a skipped
-//    triangle would be strictly greater than best: skipping it cannot change the result.
+//  - The box prefilter. Before the exact kernel (and before its stamp is read), a cell-list
+//    entry is skipped when the distance from q to its triangle's bounding box (float corners
+//    rounded outward, so the box contains the triangle; the distance computed in double) exceeds
+//    the bound best + margin. The box distance is a lower bound of the triangle's, computed with
+//    rounding of a few ulps of the coordinate scale, so by the argument above the kernel's value
+//    for a skipped triangle would be strictly greater than best: skipping it cannot change the
+//    result. The boxes are stored per reference, in the order of grid.cell_triangles, so a cell's
+//    boxes are read contiguously.
 // SearchCounters::triangles_tested counts exact kernel evaluations only (the paper's
-// Table 2 statistic); triangles_considered also counts those the box prefilter rejected.
+// Table 2 statistic); triangles_considered counts the cell-list entries read (each checked
+// against its box; a triangle listed in two visited cells counts twice) plus the hint.
 #pragma once
 
 #include <cstdint>
@@ -62,7 +65,7 @@ struct ClosestHit {
 
 struct SearchCounters {
   std::uint64_t triangles_tested = 0;      // exact point-triangle computations
-  std::uint64_t triangles_considered = 0;  // distinct triangles reached: tested + box-rejected
+  std::uint64_t triangles_considered = 0;  // cell-list entries read + hint (see above)
   std::uint64_t cells_visited = 0;         // cells whose lists were read
 };
 
@@ -78,7 +81,9 @@ struct TriangleBox {
   float hi[3];
 };
 
-std::vector<TriangleBox> triangle_boxes(std::span<const TriangleCorners> triangles);
+// The box of every reference of the grid: the box of triangle grid.cell_triangles[r] at r.
+std::vector<TriangleBox> reference_boxes(std::span<const TriangleCorners> triangles,
+                                         const UniformGrid& grid);
 
 ClosestHit brute_force_closest(std::span<const TriangleCorners> triangles, Vec3 q,
                                SearchCounters& counters);
@@ -86,7 +91,7 @@ ClosestHit brute_force_closest(std::span<const TriangleCorners> triangles, Vec3 
 class GridSearch {
  public:
   // The grid must have been built for (or validated against) these triangles, and `boxes`
-  // be triangle_boxes(triangles) (shared by the searchers of all threads).
+  // be reference_boxes(triangles, grid) (shared by the searchers of all threads).
   GridSearch(std::span<const TriangleCorners> triangles, const UniformGrid& grid,
              std::span<const TriangleBox> boxes);
 
@@ -107,6 +112,7 @@ class GridSearch {
   std::span<const TriangleBox> boxes_;
   BoundingBox box_;
   double scale_ = 0;
+  double inverse_cell_ = 0;
   std::vector<std::uint32_t> stamps_;
   std::uint32_t epoch_ = 0;
   std::uint32_t hint_ = kNoTriangle;

@@ -54,7 +54,7 @@ class SignedDistanceJob {
       : nominal_(nominal), grid_(grid), points_(points), normals_(normals), method_(method) {
     if (method_ == SignMethod::winding)
       tree_ = std::make_unique<WindingNumberTree>(nominal.corners());
-    if (grid_) boxes_ = triangle_boxes(nominal.corners());
+    if (grid_) boxes_ = reference_boxes(nominal.corners(), *grid_);
   }
 
   void run(DistanceField& field, std::size_t begin, std::size_t end) {

@@ -41,7 +41,7 @@ struct DistanceField {
 struct SearchStatistics {
   std::uint64_t queries = 0;
   std::uint64_t triangles_tested = 0;      // exact tests: the paper's Table 2 statistic, summed
-  std::uint64_t triangles_considered = 0;  // also those the box prefilter rejected
+  std::uint64_t triangles_considered = 0;  // cell-list entries box-checked, + the hints
   std::uint64_t cells_visited = 0;         // 0 for brute force
 
   double triangles_per_query() const {
