@@ -17,35 +17,58 @@ namespace ncv {
 namespace {
 
 // Temporary paths the signal handler must remove: a fixed table of fixed buffers, because
-// only async-signal-safe work (unlink, _exit) is allowed there.
+// only async-signal-safe work (unlink, _exit) is allowed there. A slot is claimed, then
+// filled, then published: the handler only ever reads a complete path.
 constexpr std::size_t kMaxPending = 16;
 constexpr std::size_t kMaxPathLength = 4096;
+enum SlotState : int { kFree, kClaimed, kPublished };
 std::array<std::array<char, kMaxPathLength>, kMaxPending> pending_paths{};
-std::array<std::atomic<bool>, kMaxPending> pending_used{};
+std::array<std::atomic<int>, kMaxPending> pending_state{};
 
-int register_pending(const std::string& path) {
-  if (path.size() >= kMaxPathLength) return -1;
+void register_pending(const std::string& path) {
+  if (path.size() >= kMaxPathLength) return;
   for (std::size_t slot = 0; slot < kMaxPending; ++slot) {
-    bool expected = false;
-    if (pending_used[slot].compare_exchange_strong(expected, true)) {
+    int expected = kFree;
+    if (pending_state[slot].compare_exchange_strong(expected, kClaimed)) {
       std::memcpy(pending_paths[slot].data(), path.c_str(), path.size() + 1);
-      return static_cast<int>(slot);
+      pending_state[slot] = kPublished;
+      return;
     }
   }
-  return -1;
 }
 
 void unregister_pending(const std::string& path) {
   for (std::size_t slot = 0; slot < kMaxPending; ++slot) {
-    if (pending_used[slot] && path == pending_paths[slot].data()) pending_used[slot] = false;
+    if (pending_state[slot] == kPublished && path == pending_paths[slot].data()) {
+      pending_state[slot] = kFree;
+    }
   }
 }
 
 extern "C" void remove_pending_and_exit(int signal_number) {
   for (std::size_t slot = 0; slot < kMaxPending; ++slot) {
-    if (pending_used[slot]) ::unlink(pending_paths[slot].data());
+    if (pending_state[slot] == kPublished) ::unlink(pending_paths[slot].data());
   }
   ::_exit(128 + signal_number);
+}
+
+// Creates "PATH.tmp.PID.N", registered with the signal handler before it exists: a signal
+// can then never find the file created but not yet registered (mkstemp, which names the
+// file as it creates it, left that window open). Returns the descriptor, or -1 with errno.
+int create_temporary(const std::string& path, std::string& temporary) {
+  static std::atomic<unsigned> next{0};
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    temporary = path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(next++);
+    register_pending(temporary);
+    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd >= 0) return fd;
+    const int error = errno;
+    unregister_pending(temporary);
+    errno = error;
+    if (error != EEXIST) break;
+  }
+  temporary.clear();
+  return -1;
 }
 
 bool is_special_file(const std::string& path) {
@@ -76,15 +99,9 @@ OutputFile::OutputFile(std::string path, OutputKind kind) : path_(std::move(path
     if (!file_) fail(std::strerror(errno));
     return;
   }
-  temporary_path_ = path_ + ".tmp.XXXXXX";
-  const int fd = ::mkstemp(temporary_path_.data());
-  if (fd < 0) {
-    const std::string problem = std::strerror(errno);
-    temporary_path_.clear();
-    fail(problem);
-  }
+  const int fd = create_temporary(path_, temporary_path_);
+  if (fd < 0) fail(std::strerror(errno));
   ::fchmod(fd, 0644);
-  register_pending(temporary_path_);
   file_ = ::fdopen(fd, "wb");
   if (!file_) {
     ::close(fd);
