@@ -10,6 +10,7 @@
 #include <memory>
 #include <numbers>
 #include <random>
+#include <string>
 
 #include <tbb/global_control.h>
 
@@ -169,8 +170,31 @@ void BM_WorkloadGrid(benchmark::State& state) {
       static_cast<double>(stats.cells_visited) / static_cast<double>(stats.queries);
 }
 
+// build_uniform_grid alone (no reading, welding, topology or writing) on the nominal named
+// by NCV_BENCH_GRID_NOMINAL_<arg> (scripts/bench.sh: 0, 1, 2 for 17 k, 170 k, 1.7 M).
+void BM_WorkloadGridBuild(benchmark::State& state) {
+  const std::string name = "NCV_BENCH_GRID_NOMINAL_" + std::to_string(state.range(0));
+  const char* path = std::getenv(name.c_str());
+  if (!path) {
+    state.SkipWithError((name + " not set").c_str());
+    return;
+  }
+  const ncv::NominalSurface nominal(ncv::read_mesh(path), path);
+  ncv::GridStatistics stats;
+  for (auto _ : state) benchmark::DoNotOptimize(ncv::build_uniform_grid(nominal, {}, &stats));
+  state.counters["triangles"] = static_cast<double>(nominal.triangle_count());
+  state.counters["bytes/triangle"] =
+      static_cast<double>(stats.bytes) / static_cast<double>(nominal.triangle_count());
+}
+
 }  // namespace
 
+BENCHMARK(BM_WorkloadGridBuild)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_WorkloadGrid)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_GridPseudonormal)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_GridPseudonormalShuffled)

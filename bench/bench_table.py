@@ -1,0 +1,284 @@
+#!/usr/bin/env python3
+"""Runs the paper-scale benchmark of ncverify and prints one table (scripts/bench.sh calls it).
+
+Every figure comes from `ncverify run --timings` (phase times, samples, triangles tested per
+sample, peak memory), `ncverify run --format json` (max, min, mean), the grid-build log
+(cells, references, time) and, when present, the micro-benchmark on the same workload
+(samples per second on one and two threads, median of repetitions). The machine may be
+shared: each measured time is the median of NCV_BENCH_REPS runs (default 3).
+"""
+import json
+import os
+import re
+import resource
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+NCV, MICRO, LARGE = sys.argv[1], sys.argv[2], sys.argv[3]
+REPS = int(os.environ.get("NCV_BENCH_REPS", "3"))
+QUICK = os.environ.get("NCV_BENCH_QUICK") == "1"
+STAGES = [("roughing", "core_roughing.stl"), ("semifinishing", "core_semifinishing.stl"),
+          ("finishing", "core_finishing.stl")]
+NOMINAL = os.path.join(LARGE, "core_nominal.stl")
+NOMINALS = [("17 k", NOMINAL), ("170 k", os.path.join(LARGE, "core_nominal_170k.stl")),
+            ("1.7 M", os.path.join(LARGE, "core_nominal_1700k.stl"))]
+
+# The paper (Miao, Song et al. 2020), Table 1 (δ = 0.1 %) and Table 2.
+PAPER_T1 = {
+    ("roughing", "all"): dict(time=166.587, max=6.0819, min=-0.3173, mean=0.2219, samples=1485408,
+                              not_sampled=0, triangles=214822),
+    ("roughing", "paper-ii"): dict(time=152.634, max=6.0819, min=-0.3173, mean=0.2166,
+                                   samples=1421798, not_sampled=108385, triangles=214822),
+    ("semifinishing", "all"): dict(time=169.43, max=1.4596, min=-0.3173, mean=0.1234,
+                                   samples=1564015, not_sampled=0, triangles=470537),
+    ("semifinishing", "paper-ii"): dict(time=127.79, max=1.4596, min=-0.3173, mean=0.1061,
+                                        samples=1371283, not_sampled=323307, triangles=470537),
+    ("finishing", "all"): dict(time=296.304, max=0.6090, min=-0.3437, mean=-0.0178,
+                               samples=1817672, not_sampled=0, triangles=1239420),
+    ("finishing", "paper-ii"): dict(time=83.332, max=0.6090, min=-0.3437, mean=-0.0230,
+                                    samples=1118635, not_sampled=1044904, triangles=1239420),
+}
+PAPER_T2 = {"roughing": (56.5, 302), "semifinishing": (55.1, 310), "finishing": (85.8, 199)}
+PHASES = ["read", "sample", "grid-build", "distance", "stats", "colorize", "write"]
+
+
+def run(workpiece, nominal, threads, scheme="all", step="0.1%"):
+    """One `ncverify run`; returns (timings, report) and removes its outputs."""
+    with tempfile.TemporaryDirectory(dir=os.environ.get("NCV_BENCH_TMP")) as tmp:
+        timings = os.path.join(tmp, "timings.json")
+        cmd = [NCV, "-q", "-j", str(threads), "run", workpiece, nominal, "-d",
+               os.path.join(tmp, "out"), "--scheme", scheme, "--step", step, "--format", "json",
+               "--timings", timings, "--force"]
+        out = subprocess.run(cmd, stdout=subprocess.PIPE, check=False)
+        if out.returncode not in (0, 1):
+            sys.exit(f"bench: {' '.join(cmd)} failed ({out.returncode})")
+        with open(timings) as f:
+            return json.load(f), json.loads(out.stdout)
+
+
+def median_run(workpiece, nominal, threads, reps=REPS, **kw):
+    runs = [run(workpiece, nominal, threads, **kw) for _ in range(reps)]
+    t = dict(runs[0][0])
+    t["phases"] = {p: statistics.median(r[0]["phases"][p] for r in runs) for p in PHASES}
+    t["total"] = statistics.median(r[0]["total"] for r in runs)
+    t["peak_memory_bytes"] = max(r[0]["peak_memory_bytes"] for r in runs)
+    return t, runs[0][1]
+
+
+def grid_build(nominal, threads=2):
+    """Grid-build time (median), cells, references and the grid's bytes per triangle."""
+    times, line = [], ""
+    with tempfile.TemporaryDirectory(dir=os.environ.get("NCV_BENCH_TMP")) as tmp:
+        for _ in range(REPS):
+            before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+            out = subprocess.run([NCV, "-j", str(threads), "grid-build", nominal, "-o",
+                                  os.path.join(tmp, "g.grid")], stderr=subprocess.PIPE, text=True,
+                                 check=True)
+            line = next(l for l in out.stderr.splitlines() if "references" in l)
+            times.append(float(re.search(r"built in ([0-9.]+) s", line).group(1)))
+    tri = int(re.search(r"([0-9]+) triangles", out.stderr).group(1))
+    cells = int(re.search(r"= ([0-9]+) cells", line).group(1))
+    refs = int(re.search(r"\), ([0-9]+) references", line).group(1))
+    peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss * 1024
+    del before
+    return dict(triangles=tri, time=statistics.median(times), cells=cells, refs=refs,
+                bytes_per_triangle=(8 * (cells + 1) + 4 * refs) / tri, peak=peak)
+
+
+def micro():
+    """Samples/s of the distance step alone on the finishing workload, 1 and 2 threads."""
+    if not os.path.exists(MICRO):
+        return None
+    env = dict(os.environ, NCV_BENCH_WORKPIECE=os.path.join(LARGE, "core_finishing.stl"),
+               NCV_BENCH_NOMINAL=NOMINAL)
+    for i, (_, path) in enumerate(NOMINALS):
+        env[f"NCV_BENCH_GRID_NOMINAL_{i}"] = path
+    out = subprocess.run([MICRO, "--benchmark_filter=WorkloadGrid", "--benchmark_format=json",
+                          f"--benchmark_repetitions={max(REPS, 3)}",
+                          "--benchmark_report_aggregates_only=true"], env=env,
+                         stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, check=True)
+    result = {}
+    for b in json.loads(out.stdout)["benchmarks"]:
+        if b.get("aggregate_name") == "median" and "GridBuild" in b["run_name"]:
+            label = NOMINALS[int(b["run_name"].split("/")[1])][0]
+            result["build " + label] = dict(ms=b["real_time"], triangles=b["triangles"],
+                                            bytes=b["bytes/triangle"])
+        elif b.get("aggregate_name") == "median":
+            threads = int(b["run_name"].split("/")[1])
+            result[threads] = dict(rate=b["items_per_second"], real_ms=b["real_time"],
+                                   cpu_ms=b["cpu_time"], tested=b["triangles/query"],
+                                   considered=b["considered/query"])
+    return result
+
+
+def fmt_s(x):
+    return f"{x:.3f}"
+
+
+def main():
+    started = time.time()
+    lines = []
+    p = lines.append
+
+    # Table 1 and Table 2: every stage, both schemes, 2 threads.
+    t1 = {}
+    for stage, file in STAGES:
+        for scheme in ("all", "paper-ii"):
+            reps = REPS if (stage == "finishing" and scheme == "all") else 1
+            t1[(stage, scheme)] = median_run(os.path.join(LARGE, file), NOMINAL, 2, reps=reps,
+                                             scheme=scheme)
+    fin1, _ = median_run(os.path.join(LARGE, "core_finishing.stl"), NOMINAL, 1)
+    fin2, _ = t1[("finishing", "all")]
+
+    p("== Stages (δ = 0.1 %, 2 threads; time in seconds; paper: Table 1) ==")
+    p(f"{'stage':<14}{'scheme':<9}{'triangles':>10}{'samples':>10}{'small':>9}"
+      + "".join(f"{ph:>9}" for ph in PHASES)
+      + f"{'total':>8}{'peak MB':>9}{'Msamp/s':>9}{'tested':>8}")
+    for (stage, scheme), (t, r) in t1.items():
+        small = (r["workpiece"]["triangles_vertex_only"] if scheme == "all"
+                 else r["workpiece"]["triangles_unsampled"])
+        rate = t["samples"] / t["phases"]["distance"] / 1e6
+        p(f"{stage:<14}{'I' if scheme == 'all' else 'II':<9}{t['triangles']:>10}"
+          f"{t['samples']:>10}{small:>9}" + "".join(f"{t['phases'][ph]:>9.3f}" for ph in PHASES)
+          + f"{t['total']:>8.3f}{t['peak_memory_bytes'] / 2**20:>9.0f}{rate:>9.2f}"
+          f"{t['triangles_tested_per_sample']:>8.2f}")
+    p("  small: triangles too small for δ (scheme I: sampled at their vertices; II: not sampled)")
+    p("  tested: exact point-triangle tests per sample (after the box prefilter)")
+    p("")
+    p("== Paper Table 1 beside ncverify (max, min, mean in mm; time in s) ==")
+    p(f"{'stage':<14}{'sch':<4}{'max':>9}{'paper':>9}{'min':>9}{'paper':>9}{'mean':>9}{'paper':>9}"
+      f"{'samples':>10}{'paper':>10}{'time':>8}{'paper':>9}")
+    for (stage, scheme), (t, r) in t1.items():
+        e, q = r["error"], PAPER_T1[(stage, scheme)]
+        p(f"{stage:<14}{'I' if scheme == 'all' else 'II':<4}{e['max']['value']:>9.4f}"
+          f"{q['max']:>9.4f}{e['min']['value']:>9.4f}{q['min']:>9.4f}{e['mean']:>9.4f}"
+          f"{q['mean']:>9.4f}{t['samples']:>10}{q['samples']:>10}{t['total']:>8.2f}"
+          f"{q['time']:>9.2f}")
+    p("")
+    p("== Paper Table 2 beside ncverify (scheme I, δ = 0.1 %) ==")
+    p(f"{'stage':<14}{'S1 tri':>9}{'S2 tri':>8}{'samples':>10}{'tested':>8}{'paper':>7}"
+      f"{'ratio':>8}{'paper':>7}")
+    for stage, _ in STAGES:
+        t, _r = t1[(stage, "all")]
+        tested = t["triangles_tested_per_sample"]
+        p(f"{stage:<14}{t['triangles']:>9}{t['nominal_triangles']:>8}{t['samples']:>10}"
+          f"{tested:>8.2f}{PAPER_T2[stage][0]:>7}{t['nominal_triangles'] / tested:>8.0f}"
+          f"{PAPER_T2[stage][1]:>7}")
+    p("")
+
+    # Grid build on the three nominal sizes, finishing against each.
+    grids = [(label, grid_build(path)) for label, path in NOMINALS if os.path.exists(path)]
+    nominal_growth = []
+    for label, path in NOMINALS:
+        if os.path.exists(path):
+            t, _ = median_run(os.path.join(LARGE, "core_finishing.stl"), path, 2, reps=1)
+            nominal_growth.append((label, t))
+    # Growth with the sample count.
+    steps = ["0.6%", "0.3%", "0.1%", "0.05%"] + ([] if QUICK else ["0.03%"])
+    step_growth = [(s, median_run(os.path.join(LARGE, "core_finishing.stl"), NOMINAL, 2, reps=1,
+                                  step=s)[0]) for s in steps]
+    m = micro()
+
+    p("== Growth: finishing, 2 threads; per-sample cost in ns (distance phase) ==")
+    p(f"{'δ':<8}{'samples':>10}{'distance s':>11}{'ns/sample':>10}{'tested':>8}{'total s':>9}"
+      f"{'peak MB':>9}")
+    for s, t in step_growth:
+        p(f"{s:<8}{t['samples']:>10}{t['phases']['distance']:>11.3f}"
+          f"{t['phases']['distance'] / t['samples'] * 1e9:>10.1f}"
+          f"{t['triangles_tested_per_sample']:>8.2f}{t['total']:>9.2f}"
+          f"{t['peak_memory_bytes'] / 2**20:>9.0f}")
+    p(f"{'nominal':<8}{'tri':>10}{'grid s':>11}{'ns/sample':>10}{'tested':>8}{'total s':>9}"
+      f"{'peak MB':>9}")
+    for label, t in nominal_growth:
+        p(f"{label:<8}{t['nominal_triangles']:>10}{t['phases']['grid-build']:>11.3f}"
+          f"{t['phases']['distance'] / t['samples'] * 1e9:>10.1f}"
+          f"{t['triangles_tested_per_sample']:>8.2f}{t['total']:>9.2f}"
+          f"{t['peak_memory_bytes'] / 2**20:>9.0f}")
+    p("")
+    p("== Grid build (2 threads, median; command = read, weld, topology, grid, write) ==")
+    p(f"{'nominal':<8}{'triangles':>10}{'cells':>10}{'refs/tri':>9}{'B/tri':>7}{'command s':>10}"
+      f"{'grid alone s':>13}")
+    for label, g in grids:
+        alone = m.get("build " + label) if m else None
+        p(f"{label:<8}{g['triangles']:>10}{g['cells']:>10}{g['refs'] / g['triangles']:>9.2f}"
+          f"{g['bytes_per_triangle']:>7.1f}{g['time']:>10.3f}"
+          + (f"{alone['ms'] / 1e3:>13.4f}" if alone else f"{'-':>13}"))
+    p("")
+
+    # The targets, each beside its measured value.
+    rate1 = fin1["samples"] / fin1["phases"]["distance"]
+    rate2 = fin2["samples"] / fin2["phases"]["distance"]
+    rows = []
+
+    def target(name, measured, goal, ok):
+        rows.append((name, measured, goal, "yes" if ok else "NO"))
+
+    target("distance, 2 threads (run)", f"{rate2 / 1e6:.2f} M samples/s", ">= 10 M/s",
+           rate2 >= 10e6)
+    target("distance, 1 thread (run)", f"{rate1 / 1e6:.2f} M samples/s", "-", True)
+    target("2 threads vs 1 (run, wall)", f"{rate2 / rate1:.2f}x", ">= 1.85x", rate2 / rate1 >= 1.85)
+    if m and 1 in m and 2 in m:
+        target("distance, 2 threads (micro)", f"{m[2]['rate'] / 1e6:.2f} M samples/s", ">= 10 M/s",
+               m[2]["rate"] >= 10e6)
+        target("distance, 1 thread (micro)", f"{m[1]['rate'] / 1e6:.2f} M samples/s", "-", True)
+        target("2 threads vs 1 (micro, wall)", f"{m[2]['rate'] / m[1]['rate']:.2f}x", ">= 1.85x",
+               m[2]["rate"] / m[1]["rate"] >= 1.85)
+        target("  work per thread (micro, cpu)",
+               f"{m[1]['cpu_ms'] / m[2]['cpu_ms']:.2f}x less", "(for a shared machine)", True)
+        target("  triangles per sample", f"{m[2]['tested']:.2f} tested, "
+               f"{m[2]['considered']:.2f} considered", "-", True)
+    target("whole job, finishing, 2 threads", f"{fin2['total']:.3f} s", "< 2 s", fin2["total"] < 2)
+    target("read + weld (1.25 M + 17 k tri)", f"{fin2['phases']['read']:.3f} s", "< 0.4 s",
+           fin2["phases"]["read"] < 0.4)
+    fin_grid = fin2["phases"]["grid-build"]
+    target("grid-build phase of run, 17 k", f"{fin_grid * 1e3:.1f} ms (incl. topology)",
+           "< 20 ms", fin_grid < 0.02)
+    for label, g in grids:
+        alone = m.get("build " + label) if m else None
+        if label == "17 k" and alone:
+            target("grid build alone, 17 k (micro)", f"{alone['ms']:.1f} ms", "< 20 ms",
+                   alone["ms"] < 20)
+        if label == "1.7 M":
+            if alone:
+                target(f"grid build alone, {g['triangles']} tri", f"{alone['ms'] / 1e3:.3f} s",
+                       "< 1 s", alone["ms"] < 1000)
+            target(f"grid-build command, {g['triangles']} tri", f"{g['time']:.3f} s "
+                   "(read..write)", "-", True)
+            target("grid memory, 1.7 M", f"{g['bytes_per_triangle']:.1f} B/triangle", "< 100",
+                   g["bytes_per_triangle"] < 100)
+    target("peak memory, finishing", f"{fin2['peak_memory_bytes'] / 2**20:.0f} MB", "< 1 GB",
+           fin2["peak_memory_bytes"] < 2**30)
+    if len(step_growth) >= 2:
+        a, b = step_growth[0][1], step_growth[-1][1]
+        ca = a["phases"]["distance"] / a["samples"]
+        cb = b["phases"]["distance"] / b["samples"]
+        target(f"ns/sample {step_growth[-1][0]} vs {step_growth[0][0]}",
+               f"{cb * 1e9:.0f} / {ca * 1e9:.0f} = {cb / ca:.2f}", "nearly flat", cb / ca < 2)
+    if len(nominal_growth) >= 2:
+        a, b = nominal_growth[0][1], nominal_growth[-1][1]
+        ca = a["phases"]["distance"] / a["samples"]
+        cb = b["phases"]["distance"] / b["samples"]
+        target(f"ns/sample {nominal_growth[-1][0]} vs 17 k nominal",
+               f"{cb * 1e9:.0f} / {ca * 1e9:.0f} = {cb / ca:.2f}", "nearly flat", cb / ca < 2)
+
+    p("== Targets (finishing workload, 1.28 M samples vs 16,922 nominal triangles) ==")
+    p(f"{'target':<36}{'measured':<34}{'goal':<24}met")
+    for name, measured, goal, ok in rows:
+        p(f"{name:<36}{measured:<34}{goal:<24}{ok}")
+    p(f"  paper, finishing scheme I: {PAPER_T1[('finishing', 'all')]['time']} s in all, "
+      f"{PAPER_T2['finishing'][0]} triangles tested per sample")
+    p("")
+    p("== Finishing phases, 1 vs 2 threads (median of runs, s) ==")
+    p(f"{'threads':<8}" + "".join(f"{ph:>11}" for ph in PHASES) + f"{'total':>9}")
+    for label, t in (("1", fin1), ("2", fin2)):
+        p(f"{label:<8}" + "".join(f"{t['phases'][ph]:>11.3f}" for ph in PHASES)
+          + f"{t['total']:>9.3f}")
+    p(f"(bench took {time.time() - started:.0f} s; load average "
+      f"{os.getloadavg()[0]:.2f} at the end; {REPS} repetitions)")
+    print("\n".join(lines))
+
+
+main()

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Paper-scale benchmark: builds the default Release configuration (no -march=native) in
+# build-bench/ (or $NCV_BENCH_BUILD), generates the large sample set once into samples/large/
+# (git-ignored) plus two finer tessellations of the nominal (about 170 k and 1.7 M triangles),
+# then runs every stage with both sampling schemes, the finishing part on 1 and 2 threads,
+# the grid build on the three nominals and the growth with δ and the nominal's size, and
+# prints one table with the paper's Table 1 and Table 2 figures and the performance targets
+# beside the measured values. Details: docs/PERFORMANCE.md.
+# Usage: scripts/bench.sh           (NCV_BENCH_REPS=N repetitions, default 3;
+#                                     NCV_BENCH_QUICK=1 skips δ = 0.03 %)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+build="${NCV_BENCH_BUILD:-build-bench}"
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DNCV_NATIVE=OFF >&2
+cmake --build "$build" --target ncverify ncgen >&2
+micro="$build/bench/ncverify_microbench"
+if cmake --build "$build" --target help | grep -q ncverify_microbench; then
+  cmake --build "$build" --target ncverify_microbench >&2
+fi
+ncgen="$build/tools/ncgen/ncgen"
+
+large=samples/large
+if [ ! -f "$large/manifest.json" ]; then
+  "$ncgen" all --seed 1 --size large --out "$large" >&2
+fi
+# The same part tessellated finer (ncgen nominal --tolerance/--level).
+[ -f "$large/core_nominal_170k.stl" ] ||
+  "$ncgen" nominal -o "$large/core_nominal_170k.stl" --tolerance 0.0045 --level 10 >&2
+[ -f "$large/core_nominal_1700k.stl" ] ||
+  "$ncgen" nominal -o "$large/core_nominal_1700k.stl" --tolerance 0.0003 --level 11 >&2
+
+exec /usr/bin/python3 bench/bench_table.py "$build/ncverify" "$micro" "$large"
