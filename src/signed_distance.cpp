@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include "closest_point_search.hpp"
 #include "error.hpp"
@@ -24,13 +25,23 @@ constexpr std::size_t kBlockSize = 512;
 
 void check_inputs(std::span<const Vec3> points, std::span<const Vec3> sample_normals,
                   SignMethod method) {
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Vec3 p = points[i];
-    if (!is_finite(p) ||
-        std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) > kMaxNominalCoordinate) {
-      throw InputError("query points", fmt::format("point {} is not finite or beyond {}", i,
-                                                   kMaxNominalCoordinate));
-    }
+  // The first bad point, found in parallel (the lowest index, whatever the thread count).
+  const std::size_t bad = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, points.size(), 1 << 14), points.size(),
+      [&](const tbb::blocked_range<std::size_t>& range, std::size_t first) {
+        for (std::size_t i = range.begin(); i < range.end() && i < first; ++i) {
+          const Vec3 p = points[i];
+          if (!is_finite(p) ||
+              std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) > kMaxNominalCoordinate) {
+            return i;
+          }
+        }
+        return first;
+      },
+      [](std::size_t a, std::size_t b) { return std::min(a, b); });
+  if (bad < points.size()) {
+    throw InputError("query points", fmt::format("point {} is not finite or beyond {}", bad,
+                                                 kMaxNominalCoordinate));
   }
   if (method == SignMethod::paper && sample_normals.size() != points.size()) {
     throw UsageError(
