@@ -32,10 +32,14 @@ std::string format_bytes(std::uint64_t bytes) {
 void check_memory_budget(const std::string& what, double bytes, bool force) {
   const std::uint64_t budget = physical_memory_bytes() / 2;
   if (force || bytes <= static_cast<double>(budget)) return;
+  // The estimate can exceed 2^64 (a step of 1e-9 on a large part), where converting it to
+  // an integer is undefined behaviour: it is written as a double.
+  const std::string needed = bytes < 1e12 ? format_bytes(static_cast<std::uint64_t>(bytes))
+                                          : fmt::format("{:.3g} GB", bytes / 1e9);
   throw UsageError(
       fmt::format("{} would need about {} of memory (this machine allows {}); "
                   "use a larger step, or --force",
-                  what, format_bytes(static_cast<std::uint64_t>(bytes)), format_bytes(budget)));
+                  what, needed, format_bytes(budget)));
 }
 
 }  // namespace ncv

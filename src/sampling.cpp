@@ -5,6 +5,10 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
+#include "error.hpp"
+
 namespace ncv {
 namespace {
 
@@ -115,7 +119,11 @@ std::uint64_t predicted_sample_count(const Mesh& mesh, double step, SamplingSche
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     const std::uint32_t n = scheme_lattice_size(triangle_area(mesh, t), step, scheme);
     if (n == 0) continue;
-    count += lattice_interior_count(n);
+    // A tiny step gives up to 2 * 10^18 samples per triangle: the sum saturates rather
+    // than wrap to a count small enough to pass the memory guard.
+    if (__builtin_add_overflow(count, lattice_interior_count(n), &count)) {
+      return std::numeric_limits<std::uint64_t>::max();
+    }
     for (std::uint32_t v : mesh.triangles[t]) {
       if (!vertex_used[v]) ++count;
       vertex_used[v] = true;
@@ -137,7 +145,11 @@ SampleSet sample_mesh(Mesh workpiece, double step, SamplingScheme scheme, Sampli
   std::uint64_t next = vertex_samples;
   for (std::size_t t = 0; t < set.tri_n.size(); ++t) {
     set.tri_first[t] = next;
-    next += lattice_interior_count(set.tri_n[t]);
+    // Only reachable past the memory guard (--force): a wrapped count would size the
+    // arrays too small for the lattice written into them.
+    if (__builtin_add_overflow(next, lattice_interior_count(set.tri_n[t]), &next)) {
+      throw UsageError(fmt::format("sampling at step {} would give more than 2^64 samples", step));
+    }
   }
   set.positions.resize(next);
   set.owner.resize(next);
