@@ -3,11 +3,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <string_view>
 
 #include "error.hpp"
 #include "input_bytes.hpp"
+#include "nominal_surface.hpp"
 #include "polygon_reader.hpp"
 #include "stl_reader.hpp"
 
@@ -95,6 +97,12 @@ void check_mesh(const Mesh& mesh, const std::string& source) {
   if (mesh.triangles.empty()) throw InputError(source, "the mesh has no triangles");
   for (const Vec3& p : mesh.vertices) {
     if (!is_finite(p)) throw InputError(source, "a vertex has a NaN or infinite coordinate");
+    // The bound the distance step holds nominal and query points to (squares of such
+    // coordinates would overflow); a workpiece beyond it used to get as far as a sampling
+    // step of "inf".
+    if (std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) > kMaxNominalCoordinate) {
+      throw InputError(source, fmt::format("a vertex lies beyond {}", kMaxNominalCoordinate));
+    }
   }
   if (mesh.triangles.size() > std::numeric_limits<std::uint32_t>::max() / 2) {
     throw InputError(source, "too many triangles (more than 2^31)");

@@ -129,6 +129,10 @@ TEST_CASE("malformed polygon files are refused with one clear message", "[polygo
              Catch::Contains("face 0: a face has 2 corners"));
   CHECK_THAT(refusal(kPlyHeader + "0 0 0\n1 0 zero\n"), Catch::Contains("'zero' is not a number"));
   CHECK_THAT(refusal(kPlyHeader + "0 0 0\n1 0 inf\n"), Catch::Contains("vertex 1 has a NaN"));
+  // Finite but beyond what distances can square: a workpiece like this used to reach
+  // sampling with a step of "inf".
+  CHECK_THAT(refusal(kPlyHeader + "0 0 0\n1e200 0 0\n0 1 0\n0 0 1\n" + kPlyFaces),
+             Catch::Contains("part: a vertex lies beyond 1e+100"));
   CHECK_THAT(refusal(kPlyHeader + "0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + kPlyFaces + "3 1 2 3\n"),
              Catch::Contains("after the last element"));
   // Counts far beyond the data: refused as truncated, no memory reserved for them.
