@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "color_map.hpp"
@@ -49,12 +50,6 @@ ColorMap choose_map(const DistanceSet& distances, const ColorizeOptions& options
   return make_color_map(kind, range, tolerance);
 }
 
-void write_text_output(const std::string& path, const std::string& text) {
-  OutputFile out(path, OutputKind::text);
-  out.write(text);
-  out.commit();
-}
-
 }  // namespace
 
 void add_colorize_options(CLI::App& sub, ColorizeOptions& options) {
@@ -82,16 +77,21 @@ void write_colorized(const DistanceSet& distances, const std::string& ply_path,
                                   "positive = excess material, negative = gouge"};
   std::ostringstream ply;
   write_error_ply(ply, mesh, map, comments);
+  // Both outputs open before either is committed: a legend path that cannot be written
+  // leaves no coloured mesh either.
   OutputFile out(ply_path, OutputKind::binary);
-  out.write(ply.view());
-  out.commit();
-  spdlog::info("wrote {} ({} vertices, {} faces, {})", out.display_name(), mesh.mesh.vertex_count(),
-               mesh.mesh.triangle_count(), map.description());
+  std::optional<OutputFile> legend;
   if (!options.legend_svg.empty()) {
+    legend.emplace(options.legend_svg, OutputKind::text);
     std::ostringstream svg;
     write_legend_svg(svg, map, "model units");
-    write_text_output(options.legend_svg, svg.str());
+    legend->write(svg.str());
   }
+  out.write(ply.view());
+  out.commit();
+  if (legend) legend->commit();
+  spdlog::info("wrote {} ({} vertices, {} faces, {})", out.display_name(), mesh.mesh.vertex_count(),
+               mesh.mesh.triangle_count(), map.description());
 }
 
 }  // namespace ncv::cmd

@@ -2,6 +2,8 @@
 // status 1 when out of tolerance.
 #include <spdlog/spdlog.h>
 
+#include <optional>
+
 #include "commands.hpp"
 #include "distance_file.hpp"
 #include "error.hpp"
@@ -30,10 +32,17 @@ void run_stats(const StatsOptions& options, CommandContext& context) {
   if (options.distances.empty()) throw UsageError("stats: give a distance file");
   const DistanceSet distances = read_distance_file(options.distances);
   const PartReport report = make_report(distances, options.report);
+  // Both outputs open before either is committed: a histogram path that cannot be
+  // written leaves no report either.
   OutputFile out(options.output, OutputKind::text);
+  std::optional<OutputFile> histogram;
+  if (!options.report.histogram_svg.empty()) {
+    histogram.emplace(options.report.histogram_svg, OutputKind::text);
+    write_histogram(report, *histogram);
+  }
   out.write(format_report(report, parse_report_format(options.format), !options.no_header));
   out.commit();
-  write_histogram_if_asked(report, options.report);
+  if (histogram) histogram->commit();
   context.exit_status = verdict_status(report);
 }
 

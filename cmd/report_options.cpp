@@ -40,15 +40,19 @@ PartReport make_report(const DistanceSet& distances, const ReportOptions& option
   return report;
 }
 
-void write_histogram_if_asked(const PartReport& report, const ReportOptions& options) {
-  if (options.histogram_svg.empty()) return;
+void write_histogram(const PartReport& report, OutputFile& out) {
   std::ostringstream svg;
   write_histogram_svg(svg, report.statistics.histogram,
                       report.statistics.tolerance
                           ? std::optional<Tolerance>(report.statistics.tolerance->tolerance)
                           : std::nullopt);
-  OutputFile out(options.histogram_svg, OutputKind::text);
   out.write(svg.str());
+}
+
+void write_histogram_if_asked(const PartReport& report, const ReportOptions& options) {
+  if (options.histogram_svg.empty()) return;
+  OutputFile out(options.histogram_svg, OutputKind::text);
+  write_histogram(report, out);
   out.commit();
 }
 

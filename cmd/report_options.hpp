@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "output_file.hpp"
 #include "statistics_report.hpp"
 
 namespace ncv::cmd {
@@ -21,5 +22,8 @@ void add_report_options(CLI::App& sub, ReportOptions& options);
 std::optional<Tolerance> parse_tolerance_option(const std::string& text);
 PartReport make_report(const DistanceSet& distances, const ReportOptions& options);
 void write_histogram_if_asked(const PartReport& report, const ReportOptions& options);
+// The histogram SVG to an output the caller opened together with its others, so that a
+// path that cannot be written leaves none of them behind.
+void write_histogram(const PartReport& report, OutputFile& out);
 
 }  // namespace ncv::cmd

@@ -165,6 +165,10 @@ expect_bad_input "output folder missing" "nowhere/out.samples: cannot write: No 
   "$NCVERIFY" sample box.stl -o nowhere/out.samples
 expect_bad_input "output to /dev/full" "/dev/full: cannot write: No space left on device" "" \
   "$NCVERIFY" sample box.stl -o /dev/full --step 2
+expect_bad_input "legend to a missing folder: no coloured mesh either" "nowhere/legend.svg: cannot write" \
+  colored.ply "$NCVERIFY" colorize good.dist -o colored.ply --legend nowhere/legend.svg
+expect_bad_input "histogram to a missing folder: no report either" "nowhere/histogram.svg: cannot write" \
+  report.txt "$NCVERIFY" stats good.dist -o report.txt --histogram-svg nowhere/histogram.svg
 expect_bad_input "output is a folder" "folder.stl: cannot write: Is a directory" "" \
   "$NCVERIFY" sample box.stl -o folder.stl --step 2
 # Root writes anywhere, so the read-only case runs as nobody when the suite runs as root.
