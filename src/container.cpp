@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <memory>
+#include <new>
 
 #include "input_bytes.hpp"
 
@@ -137,7 +139,11 @@ void ContainerWriter::write(OutputFile& out) {
   store<std::uint64_t>(header.data() + 16, meta_text.size());
   store<std::uint64_t>(header.data() + 24, file_bytes);
 
-  XXH3_state_t* state = XXH3_createState();
+  // Owned, so that a write that throws (a full disk) does not leak it.
+  const std::unique_ptr<XXH3_state_t, decltype(&XXH3_freeState)> owned_state(XXH3_createState(),
+                                                                             &XXH3_freeState);
+  if (!owned_state) throw std::bad_alloc();
+  XXH3_state_t* state = owned_state.get();
   XXH3_64bits_reset(state);
   std::uint64_t written = 0;
   auto emit = [&](const void* data, std::uint64_t bytes) {
@@ -155,7 +161,6 @@ void ContainerWriter::write(OutputFile& out) {
     emit(sections_[s].data, sections_[s].bytes);
   }
   const std::uint64_t hash = XXH3_64bits_digest(state);
-  XXH3_freeState(state);
   out.write(&hash, sizeof hash);
 }
 
