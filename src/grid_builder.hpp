@@ -23,8 +23,8 @@
 // 8 * 8 T + 4 * 16 T = 128 bytes per triangle (offsets of 8 bytes, references of 4), and
 // the build at most 132 bytes per triangle more while it runs (the references once more, in
 // per-chunk vectors trimmed when done, a count per triangle and a cursor per cell), plus
-// one growing chunk of 4096 triangles per thread. One exact test per candidate cell. The same bounds apply to a cell size
-// given as an option; GridStatistics says when it grew.
+// one growing chunk of 4096 triangles per thread. One exact test per candidate cell. The same
+// bounds apply to a cell size given as an option; GridStatistics says when it grew.
 //
 // Parallel over triangles with oneTBB; the result does not depend on the thread count.
 #pragma once

@@ -416,9 +416,9 @@ TEST_CASE("distances that do not fit the samples are input errors", "[stats]") {
 
 TEST_CASE("the mean divides by the whole workpiece area, also under scheme II", "[stats]") {
   // A 10 x 10 square (sampled) and a small far triangle of area 0.5 that scheme II skips.
-  ncv::Mesh mesh{{{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {10, 10, 0}, {50, 50, 50}, {51, 50, 50},
-                  {50, 51, 50}},
-                 {{0, 1, 2}, {3, 2, 1}, {4, 5, 6}}};
+  ncv::Mesh mesh{
+      {{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {10, 10, 0}, {50, 50, 50}, {51, 50, 50}, {50, 51, 50}},
+      {{0, 1, 2}, {3, 2, 1}, {4, 5, 6}}};
   const ncv::SampleSet set = ncv::sample_mesh(mesh, 2.0, ncv::SamplingScheme::paper_ii);
   REQUIRE(set.tri_n[2] == 0);
   const std::vector<double> d(set.sample_count(), 1.0);
