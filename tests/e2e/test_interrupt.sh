@@ -5,58 +5,55 @@
 cd "$WORK"
 write_box_stl box.stl 10 10 10
 
-# wait_for GLOB PID: until a file matching GLOB exists (true) or PID has ended (false).
-wait_for() {
-  local glob=$1 pid=$2
-  while kill -0 "$pid" 2>/dev/null; do
-    compgen -G "$glob" >/dev/null && return 0
-    sleep 0.01
-  done
-  return 1
-}
+# Starts a command, sends it a signal as soon as its temporary output exists, and prints
+# its exit status. Python, not the shell: a Popen child is never reaped before its status
+# is asked for, so its process id cannot be reused by an unrelated process (a compiler of a
+# concurrent build) before the signal is sent, as a shell's background job's can.
+# Usage: send_signal.py SIGNAL OUTPUT STDIN STDERR command...; STDIN "pipe" holds standard
+# input open without writing to it (a producer that has not finished), "null" gives
+# /dev/null; the command's standard error goes to the file STDERR.
+cat >send_signal.py <<'PY'
+import glob, signal, subprocess, sys, time
+name, output, stdin, stderr, *command = sys.argv[1:]
+child = subprocess.Popen(command, stdin=subprocess.PIPE if stdin == "pipe" else subprocess.DEVNULL,
+                         stderr=open(stderr, "w"))
+while not glob.glob(output + ".tmp.*"):
+    if child.poll() is not None:
+        print(f"ended with status {child.returncode} before its temporary output appeared")
+        sys.exit(1)
+    time.sleep(0.005)
+child.send_signal(getattr(signal, name))
+print(child.wait())
+PY
 
-# interrupt NAME SIGNAL STATUS OUTPUT_GLOB command...: starts the command in the background,
-# sends SIGNAL as soon as its temporary output exists, then checks the exit status and
-# that nothing matching OUTPUT_GLOB (the output or its temporary) is left.
+# interrupt NAME SIGNAL STATUS OUTPUT STDIN command...: the exit status must be STATUS,
+# standard error empty, and neither OUTPUT nor its temporary left.
 interrupt() {
-  local name=$1 signal=$2 want=$3 glob=$4
-  shift 4
-  "$@" 2>"$name.err" &
-  local pid=$!
-  if ! wait_for "$glob.tmp.*" "$pid"; then
-    wait "$pid"
-    fail "$name: ended (status $?) before its temporary output appeared"
-    return
-  fi
-  kill "-$signal" "$pid"
-  wait "$pid"
-  local got=$?
-  check "$name: exit status $got is $want" test "$got" -eq "$want"
-  check "$name: no output nor temporary left ($(compgen -G "$glob*" | tr '\n' ' '))" \
-    test -z "$(compgen -G "$glob*")"
-  check "$name: nothing on stderr" test ! -s "$name.err"
+  local name=$1 signal=$2 want=$3 output=$4 stdin=$5
+  shift 5
+  local got
+  got=$(/usr/bin/python3 send_signal.py "$signal" "$output" "$stdin" stderr.txt "$@")
+  check "$name: exit status $got is $want" test "$got" = "$want"
+  check "$name: no output nor temporary left ($(compgen -G "$output*" | tr '\n' ' '))" \
+    test -z "$(compgen -G "$output*")"
+  check "$name: nothing on stderr" test ! -s stderr.txt
 }
 
 # A long run: sampling at a tiny step, forced past the memory guard (2 x 10^6 samples a
 # second; the temporary output exists from the start, since outputs are opened first).
-interrupt "sample at a tiny step, SIGINT" INT 130 big.samples \
+interrupt "sample at a tiny step, SIGINT" SIGINT 130 big.samples null \
   "$NCVERIFY" -q sample box.stl -o big.samples --step 0.006 --force
-interrupt "sample at a tiny step, SIGTERM" TERM 143 big.samples \
+interrupt "sample at a tiny step, SIGTERM" SIGTERM 143 big.samples null \
   "$NCVERIFY" -q sample box.stl -o big.samples --step 0.006 --force
 
 # A run blocked on its input (a pipe whose writer has not finished): the temporary output
 # is certainly pending when the signal comes.
-mkfifo slow.fifo
-sleep 30 >slow.fifo &
-writer=$!
-# (The redirection goes inside: a background job's standard input is /dev/null otherwise.)
-interrupt "sample waiting on standard input, SIGINT" INT 130 piped.samples \
-  sh -c 'exec "$@" <slow.fifo' sh "$NCVERIFY" -q sample - -o piped.samples
-kill "$writer" 2>/dev/null
+interrupt "sample waiting on standard input, SIGINT" SIGINT 130 piped.samples pipe \
+  "$NCVERIFY" -q sample - -o piped.samples
 
 # `run` keeps complete intermediates only: the file being written when the signal comes
 # goes, with its temporary.
-interrupt "run at a tiny step, SIGINT" INT 130 part/box.samples \
+interrupt "run at a tiny step, SIGINT" SIGINT 130 part/box.samples null \
   "$NCVERIFY" -q run box.stl box.stl -d part --step 0.006 --force
 check "run: no temporary left in its folder" test -z "$(compgen -G 'part/*.tmp.*')"
 finish
