@@ -32,24 +32,25 @@
 //    is read. forget_hint() drops it; the distance step does so at fixed block starts, so
 //    the counters do not depend on how blocks are spread over threads.
 //  - The box prefilter. Before the exact kernel (and before its stamp is read), a cell-list
-//    entry is skipped when the distance from q to its triangle's bounding box (float corners
-//    rounded outward, so the box contains the triangle; the distance computed in double) exceeds
-//    the bound best + margin. The box distance is a lower bound of the triangle's, computed with
-//    rounding of a few ulps of the coordinate scale, so by the argument above the kernel's value
-//    for a skipped triangle would be strictly greater than best: skipping it cannot change the
-//    result. The boxes are stored per reference, in the order of grid.cell_triangles, so a cell's
-//    boxes are read contiguously.
+//    entry is skipped when its triangle's bounding box is farther from q than the bound
+//    best + margin. The boxes are floats rounded outward, stored per reference four to a
+//    block (reference_boxes.hpp) and measured four at a time with a conservative float
+//    test (box_lanes.hpp): a box is only skipped when its exact distance exceeds the bound,
+//    so by the argument above the kernel's value for its triangle would be strictly greater
+//    than best: skipping it cannot change the result. A cell's boxes are read contiguously.
 // SearchCounters::triangles_tested counts exact kernel evaluations only (the paper's
 // Table 2 statistic); triangles_considered counts the cell-list entries read (each checked
 // against its box; a triangle listed in two visited cells counts twice) plus the hint.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <span>
 #include <vector>
 
 #include "closest_point.hpp"
+#include "reference_boxes.hpp"
 #include "uniform_grid.hpp"
 
 namespace ncv {
@@ -75,25 +76,15 @@ inline bool improves(double squared_distance, std::uint32_t triangle, const Clos
          (squared_distance == best.squared_distance && triangle < best.triangle);
 }
 
-// A triangle's bounding box in float, rounded outward so that it contains the triangle.
-struct TriangleBox {
-  float lo[3];
-  float hi[3];
-};
-
-// The box of every reference of the grid: the box of triangle grid.cell_triangles[r] at r.
-std::vector<TriangleBox> reference_boxes(std::span<const TriangleCorners> triangles,
-                                         const UniformGrid& grid);
-
 ClosestHit brute_force_closest(std::span<const TriangleCorners> triangles, Vec3 q,
                                SearchCounters& counters);
 
 class GridSearch {
  public:
   // The grid must have been built for (or validated against) these triangles, and `boxes`
-  // be reference_boxes(triangles, grid) (shared by the searchers of all threads).
+  // be build_reference_boxes(triangles, grid) (shared by the searchers of all threads).
   GridSearch(std::span<const TriangleCorners> triangles, const UniformGrid& grid,
-             std::span<const TriangleBox> boxes);
+             std::span<const BoxBlock> boxes);
 
   ClosestHit closest(Vec3 q, SearchCounters& counters);
   // The next query starts without the previous one's closest triangle.
@@ -105,12 +96,20 @@ class GridSearch {
   void visit_cell(Query& query, std::uint64_t cell);
   void test(Query& query, std::uint32_t t);
   bool covers_grid(const Query& query) const;
+  // grid_.cell_bound(axis, i), the same expression.
+  double cell_bound(int axis, std::int64_t i) const {
+    return origin_[axis] + static_cast<double>(i) * grid_.cell_size;
+  }
+  double cell_gap(const Query& query, int axis, std::int64_t i) const;
   double unvisited_squared_distance(const Query& query) const;
 
   std::span<const TriangleCorners> triangles_;
   const UniformGrid& grid_;
-  std::span<const TriangleBox> boxes_;
+  std::span<const BoxBlock> boxes_;
   BoundingBox box_;
+  // The grid's origin, box and last cell index by axis.
+  std::array<double, 3> origin_, box_min_, box_max_;
+  std::array<std::int64_t, 3> last_cell_;
   double scale_ = 0;
   double inverse_cell_ = 0;
   std::vector<std::uint32_t> stamps_;

@@ -81,9 +81,9 @@ DistanceSet load_distance_set(const Container& c) {
   }
   set.triangles_tested_per_sample = c.field("/distance/triangles_tested_per_sample").get<double>();
 
-  set.field.distance = c.get<double>("distance", S);
-  set.field.closest_point = to_points(c.get<double>("closest_point", S, 3));
-  set.field.closest_face = c.get<std::uint32_t>("closest_face", S);
+  set.field.distance = c.get<double, Buffer<double>>("distance", S);
+  set.field.closest_point = to_points<Buffer<Vec3>>(c.get<double>("closest_point", S, 3));
+  set.field.closest_face = c.get<std::uint32_t, Buffer<std::uint32_t>>("closest_face", S);
   for (std::uint64_t s = 0; s < S; ++s) {
     if (!std::isfinite(set.field.distance[s]) || !is_finite(set.field.closest_point[s])) {
       c.fail("a distance or closest point is not finite");

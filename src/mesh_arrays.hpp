@@ -11,7 +11,7 @@ namespace ncv {
 
 static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(Triangle) == 3 * sizeof(std::uint32_t));
 
-inline std::span<const double> flat_coordinates(const std::vector<Vec3>& points) {
+inline std::span<const double> flat_coordinates(std::span<const Vec3> points) {
   return {reinterpret_cast<const double*>(points.data()), points.size() * 3};
 }
 
@@ -19,8 +19,9 @@ inline std::span<const std::uint32_t> flat_indices(const std::vector<Triangle>& 
   return {reinterpret_cast<const std::uint32_t*>(triangles.data()), triangles.size() * 3};
 }
 
-inline std::vector<Vec3> to_points(const std::vector<double>& values) {
-  std::vector<Vec3> points(values.size() / 3);
+template <class Points = std::vector<Vec3>>
+Points to_points(std::span<const double> values) {
+  Points points(values.size() / 3);
   for (std::size_t k = 0; k < points.size(); ++k) {
     points[k] = {values[3 * k], values[3 * k + 1], values[3 * k + 2]};
   }

@@ -65,7 +65,7 @@ class SignedDistanceJob {
       : nominal_(nominal), grid_(grid), points_(points), normals_(normals), method_(method) {
     if (method_ == SignMethod::winding)
       tree_ = std::make_unique<WindingNumberTree>(nominal.corners());
-    if (grid_) boxes_ = reference_boxes(nominal.corners(), *grid_);
+    if (grid_) boxes_ = build_reference_boxes(nominal.corners(), *grid_);
   }
 
   void run(DistanceField& field, std::size_t begin, std::size_t end) {
@@ -127,7 +127,7 @@ class SignedDistanceJob {
   std::span<const Vec3> normals_;
   SignMethod method_;
   std::unique_ptr<WindingNumberTree> tree_;
-  std::vector<TriangleBox> boxes_;
+  std::vector<BoxBlock> boxes_;
   tbb::enumerable_thread_specific<Worker> workers_;
 };
 

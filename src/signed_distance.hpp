@@ -26,16 +26,18 @@
 #include <span>
 #include <vector>
 
+#include "buffer.hpp"
 #include "nominal_surface.hpp"
 #include "sign_method.hpp"
 #include "uniform_grid.hpp"
 
 namespace ncv {
 
+// Buffers: filled by the parallel loop without a serial zeroing pass first (buffer.hpp).
 struct DistanceField {
-  std::vector<double> distance;     // signed
-  std::vector<Vec3> closest_point;  // on the nominal, global frame
-  std::vector<std::uint32_t> closest_face;
+  Buffer<double> distance;     // signed
+  Buffer<Vec3> closest_point;  // on the nominal, global frame
+  Buffer<std::uint32_t> closest_face;
 };
 
 struct SearchStatistics {
