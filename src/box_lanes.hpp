@@ -9,7 +9,8 @@
 // the exact gap of the query to the (float) box, and the gap vector within sqrt(3) times
 // that, under 2^-21 s, in length. The sum of squares adds at most four roundings, a factor
 // below 1 + 2^-21. A lane is rejected when that sum exceeds
-//     limit = (bound + 2^-20 s)^2 * (1 + 2^-20), rounded up to float,
+//     limit = float((bound + 2^-20 s)^2 * (1 + 2^-19)) >= (bound + 2^-20 s)^2 * (1 + 2^-20)
+// (rounding to the nearest float loses at most 2^-24 of it),
 // so the computed gap length exceeds bound + 2^-20 s and the exact one exceeds bound. The
 // box contains the triangle, so the triangle is farther than bound too: rejecting it is
 // what the search's stopping argument already allows. Rounding only ever makes the filter
@@ -40,10 +41,11 @@ constexpr bool box_filter_usable(double scale) {
 }
 
 // The float limit for a search bound at coordinate scale s (see above); +inf for an
-// infinite bound.
+// infinite bound. A finite bound is at most 4 s (the query and every triangle lie within
+// s of the origin), so with s <= 2^60 the limit stays below 2^124, inside float's range.
 inline float box_filter_limit(double bound, double scale) {
   const double grown = bound + kBoxFilterSlack * scale;
-  return float_at_or_above(grown * grown * (1 + kBoxFilterSlack));
+  return static_cast<float>(grown * grown * (1 + 2 * kBoxFilterSlack));
 }
 
 // Bit k set when lane k of the block may be within the bound; squared[k] receives the

@@ -4,18 +4,33 @@
 // 46 MB at the paper's scale, one tenth of the step), and the page faults of first touch
 // would all land on that thread instead of being spread over the workers.
 //
+// Large buffers (4 MiB and up) are aligned to 2 MiB and offered to the kernel for
+// transparent huge pages (madvise; Linux's default THP mode): first touch then faults once
+// per 2 MiB instead of once per 4 KiB, which for the distance step's buffers was a tenth of
+// its time. Where huge pages are unavailable the advice is ignored.
+//
 // Only for implicit-lifetime element types (trivially copyable, trivially destructible):
 // the allocation itself creates their objects, so skipping the constructor is well defined;
 // their values are indeterminate until written, and every user writes each element before
 // reading it.
 #pragma once
 
+#include <cstddef>
+#include <cstdlib>
+#include <limits>
 #include <memory>
+#include <new>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace ncv {
+
+namespace detail {
+inline constexpr std::size_t kHugePage = std::size_t{2} << 20;
+inline constexpr std::size_t kHugeBufferBytes = std::size_t{4} << 20;
+void* allocate_huge(std::size_t bytes);  // aligned to kHugePage; throws std::bad_alloc
+}  // namespace detail
 
 template <class T>
 class UninitializedAllocator : public std::allocator<T> {
@@ -27,6 +42,16 @@ class UninitializedAllocator : public std::allocator<T> {
   UninitializedAllocator() = default;
   template <class U>
   UninitializedAllocator(const UninitializedAllocator<U>&) noexcept {}
+
+  T* allocate(std::size_t n) {
+    if (n > std::numeric_limits<std::size_t>::max() / sizeof(T)) throw std::bad_array_new_length();
+    if (n * sizeof(T) < detail::kHugeBufferBytes) return std::allocator<T>{}.allocate(n);
+    return static_cast<T*>(detail::allocate_huge(n * sizeof(T)));
+  }
+  void deallocate(T* p, std::size_t n) noexcept {
+    if (n * sizeof(T) < detail::kHugeBufferBytes) return std::allocator<T>{}.deallocate(p, n);
+    std::free(p);
+  }
 
   template <class U>
   void construct(U*) noexcept {

@@ -153,21 +153,37 @@ void GridSearch::visit_shell(Query& query, std::int64_t m) {
   }
 }
 
+// Two passes per chunk of blocks, so that the box tests run without a branch per lane: the
+// first measures the blocks and appends every passing lane to `found` (each lane is written,
+// the count only advances for passing ones); the second tests those, re-checking each box
+// against the bound, which may have shrunk since.
 void GridSearch::visit_cell(Query& query, std::uint64_t cell) {
   ++query.counters->cells_visited;
   const std::uint64_t begin = grid_.cell_offsets[cell];
   const std::uint64_t end = grid_.cell_offsets[cell + 1];
   query.counters->triangles_considered += end - begin;
-  for (std::uint64_t first = begin - begin % kBoxLanes; first < end; first += kBoxLanes) {
-    const BoxBlock& block = boxes_[first / kBoxLanes];
-    unsigned lanes = cell_lanes(first, begin, end);
-    float squared[kBoxLanes] = {0, 0, 0, 0};
-    if (query.filter) lanes &= near_lanes(block, query.point, query.limit, squared);
-    while (lanes != 0) {
-      const int lane = std::countr_zero(lanes);
-      lanes &= lanes - 1;
-      if (squared[lane] > query.limit) continue;  // the bound shrank since the block was measured
-      const std::uint32_t t = block.triangle[lane];
+  struct Candidate {
+    std::uint32_t triangle;
+    float squared;
+  };
+  constexpr std::size_t kCapacity = 32;
+  std::uint64_t first = begin - begin % kBoxLanes;
+  while (first < end) {
+    Candidate found[kCapacity];
+    std::size_t count = 0;
+    for (; first < end && count + kBoxLanes <= kCapacity; first += kBoxLanes) {
+      const BoxBlock& block = boxes_[first / kBoxLanes];
+      float squared[kBoxLanes] = {0, 0, 0, 0};
+      unsigned lanes = cell_lanes(first, begin, end);
+      if (query.filter) lanes &= near_lanes(block, query.point, query.limit, squared);
+      for (int lane = 0; lane < kBoxLanes; ++lane) {
+        found[count] = {block.triangle[lane], squared[lane]};
+        count += (lanes >> lane) & 1u;
+      }
+    }
+    for (std::size_t k = 0; k < count; ++k) {
+      if (found[k].squared > query.limit) continue;
+      const std::uint32_t t = found[k].triangle;
       if (stamps_[t] == epoch_) continue;
       stamps_[t] = epoch_;
       test(query, t);

@@ -54,9 +54,9 @@ void fill_blocks(std::span<const TriangleCorners> triangles, const UniformGrid& 
 
 }  // namespace
 
-std::vector<BoxBlock> build_reference_boxes(std::span<const TriangleCorners> triangles,
-                                            const UniformGrid& grid) {
-  std::vector<BoxBlock> blocks((grid.cell_triangles.size() + kBoxLanes - 1) / kBoxLanes);
+Buffer<BoxBlock> build_reference_boxes(std::span<const TriangleCorners> triangles,
+                                       const UniformGrid& grid) {
+  Buffer<BoxBlock> blocks((grid.cell_triangles.size() + kBoxLanes - 1) / kBoxLanes);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks.size(), 1 << 12),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       fill_blocks(triangles, grid, blocks, range.begin(), range.end());

@@ -13,6 +13,7 @@
 #include <span>
 #include <vector>
 
+#include "buffer.hpp"
 #include "closest_point.hpp"
 #include "uniform_grid.hpp"
 
@@ -33,7 +34,7 @@ float float_at_or_below(double x);
 float float_at_or_above(double x);
 
 // Built in parallel; `grid` must have been built for (or validated against) `triangles`.
-std::vector<BoxBlock> build_reference_boxes(std::span<const TriangleCorners> triangles,
-                                            const UniformGrid& grid);
+Buffer<BoxBlock> build_reference_boxes(std::span<const TriangleCorners> triangles,
+                                       const UniformGrid& grid);
 
 }  // namespace ncv

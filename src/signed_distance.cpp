@@ -127,7 +127,7 @@ class SignedDistanceJob {
   std::span<const Vec3> normals_;
   SignMethod method_;
   std::unique_ptr<WindingNumberTree> tree_;
-  std::vector<BoxBlock> boxes_;
+  Buffer<BoxBlock> boxes_;
   tbb::enumerable_thread_specific<Worker> workers_;
 };
 

@@ -111,7 +111,7 @@ TEST_CASE("box lanes: the filter is switched off outside float's safe range", "[
 TEST_CASE("reference boxes: block r / 4, lane r % 4 holds reference r's box", "[search]") {
   const ncv::NominalSurface nominal(ncv::fixtures::torus(40, 10, 60, 30), "torus");
   const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal);
-  const std::vector<BoxBlock> blocks = ncv::build_reference_boxes(nominal.corners(), grid);
+  const ncv::Buffer<BoxBlock> blocks = ncv::build_reference_boxes(nominal.corners(), grid);
   const std::size_t references = grid.cell_triangles.size();
   REQUIRE(blocks.size() == (references + kBoxLanes - 1) / kBoxLanes);
   for (std::size_t r = 0; r < blocks.size() * kBoxLanes; ++r) {
