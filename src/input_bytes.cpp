@@ -43,25 +43,25 @@ std::vector<char> read_input_bytes(const std::string& path) {
   if (::fstat(fd.get(), &info) != 0) throw InputError(name, std::strerror(errno));
   if (S_ISDIR(info.st_mode)) throw InputError(name, "is a directory, not a file");
 
-  std::vector<char> bytes;
-  // A regular file's size is known and real, so reserve it; streams grow as data arrives.
-  if (S_ISREG(info.st_mode)) bytes.reserve(static_cast<std::size_t>(info.st_size));
-  constexpr std::size_t chunk = std::size_t{1} << 20;
+  // A regular file's size is known and real: one buffer of that size, plus a byte so that
+  // reaching the end needs no reallocation (each one copies everything read so far).
+  // Streams grow as data arrives and give back the excess at the end.
+  const bool sized = S_ISREG(info.st_mode);
+  std::vector<char> bytes(sized ? static_cast<std::size_t>(info.st_size) + 1
+                                : std::size_t{1} << 16);
+  std::size_t used = 0;
   for (;;) {
-    const std::size_t used = bytes.size();
-    bytes.resize(used + chunk);
-    const ssize_t got = ::read(fd.get(), bytes.data() + used, chunk);
+    if (used == bytes.size()) bytes.resize(2 * bytes.size());
+    const ssize_t got = ::read(fd.get(), bytes.data() + used, bytes.size() - used);
     if (got < 0) {
-      if (errno == EINTR) {
-        bytes.resize(used);
-        continue;
-      }
+      if (errno == EINTR) continue;
       throw InputError(name, std::string("read error: ") + std::strerror(errno));
     }
-    bytes.resize(used + static_cast<std::size_t>(got));
     if (got == 0) break;
+    used += static_cast<std::size_t>(got);
   }
-  bytes.shrink_to_fit();
+  bytes.resize(used);
+  if (!sized) bytes.shrink_to_fit();
   return bytes;
 }
 

@@ -1,6 +1,8 @@
 #include "mesh_reader.hpp"
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <cmath>
@@ -133,9 +135,15 @@ Mesh parse_mesh(std::span<const char> bytes, const std::string& source, MeshRead
   r = {};
   Mesh mesh = parse_by_content(bytes, source, r);
   check_mesh(mesh, source);
-  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-    if (squared_norm(area_vector(mesh, t)) == 0) ++r.degenerate_triangles;
-  }
+  r.degenerate_triangles = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, mesh.triangle_count(), 1 << 14), std::size_t{0},
+      [&](const tbb::blocked_range<std::size_t>& range, std::size_t degenerate) {
+        for (std::size_t t = range.begin(); t < range.end(); ++t) {
+          if (squared_norm(area_vector(mesh, t)) == 0) ++degenerate;
+        }
+        return degenerate;
+      },
+      std::plus<>());
   return mesh;
 }
 

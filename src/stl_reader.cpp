@@ -180,14 +180,25 @@ Mesh parse_binary_stl(std::span<const char> bytes, const std::string& source) {
   VertexWelder welder(count / 2 + 16);
   Mesh mesh;
   mesh.triangles.resize(count);
-  const char* facet = bytes.data() + kBinaryHeader;
-  for (std::uint64_t t = 0; t < count; ++t, facet += kBinaryFacet) {
-    float corners[9];
-    std::memcpy(corners, facet + 12, sizeof corners);
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 p{corners[3 * k], corners[3 * k + 1], corners[3 * k + 2]};
-      check_finite(p, t, source);
-      mesh.triangles[t][k] = welder.weld(p);
+  // Corners are converted a chunk at a time, then welded together (VertexWelder::weld_all).
+  constexpr std::uint64_t kChunk = 1024;
+  std::vector<Vec3> corners(3 * kChunk);
+  std::vector<std::uint32_t> indices(3 * kChunk);
+  for (std::uint64_t first = 0; first < count; first += kChunk) {
+    const std::uint64_t chunk = std::min(kChunk, count - first);
+    const char* facet = bytes.data() + kBinaryHeader + first * kBinaryFacet;
+    for (std::uint64_t i = 0; i < chunk; ++i, facet += kBinaryFacet) {
+      float xyz[9];
+      std::memcpy(xyz, facet + 12, sizeof xyz);
+      for (int k = 0; k < 3; ++k) {
+        const Vec3 p{xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]};
+        check_finite(p, first + i, source);
+        corners[3 * i + k] = p;
+      }
+    }
+    welder.weld_all(std::span(corners).first(3 * chunk), indices);
+    for (std::uint64_t i = 0; i < chunk; ++i) {
+      mesh.triangles[first + i] = {indices[3 * i], indices[3 * i + 1], indices[3 * i + 2]};
     }
   }
   mesh.vertices = welder.take_vertices();

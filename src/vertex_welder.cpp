@@ -44,7 +44,25 @@ std::uint32_t VertexWelder::weld(Vec3 p) {
       if (2 * vertices_.size() > slots_.size()) grow();
       return index;
     }
-    if (keys_[entry - 1] == bits) return entry - 1;
+    const auto& key = keys_[entry - 1];
+    if (key[0] == bits[0] && key[1] == bits[1] && key[2] == bits[2]) return entry - 1;
+  }
+}
+
+void VertexWelder::weld_all(std::span<const Vec3> points, std::span<std::uint32_t> indices) {
+  // The slot of the point kSlotsAhead on is fetched; once it has arrived (kKeysAhead on),
+  // the key it names.
+  constexpr std::size_t kSlotsAhead = 16, kKeysAhead = 8;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (i + kSlotsAhead < points.size()) {
+      __builtin_prefetch(&slots_[hash_bits(coordinate_bits(points[i + kSlotsAhead])) & mask_]);
+    }
+    if (i + kKeysAhead < points.size()) {
+      const std::uint32_t entry =
+          slots_[hash_bits(coordinate_bits(points[i + kKeysAhead])) & mask_];
+      if (entry != 0) __builtin_prefetch(&keys_[entry - 1]);
+    }
+    indices[i] = weld(points[i]);
   }
 }
 

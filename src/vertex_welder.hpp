@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "vec3.hpp"
@@ -15,6 +16,9 @@ class VertexWelder {
   explicit VertexWelder(std::size_t expected_vertices);
   // Index of the vertex with these coordinates, adding it if new.
   std::uint32_t weld(Vec3 p);
+  // weld(points[i]) into indices[i] for each i, in order; the table is prefetched a few
+  // points ahead, since its random accesses, not the arithmetic, are what welding costs.
+  void weld_all(std::span<const Vec3> points, std::span<std::uint32_t> indices);
   std::vector<Vec3> take_vertices() { return std::move(vertices_); }
 
  private:
