@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include <tbb/parallel_sort.h>
+
 namespace ncv {
 namespace {
 
@@ -105,7 +107,7 @@ void count_edge_kinds(const Mesh& mesh, const EdgeIncidence& incidence, Topology
 std::uint64_t count_duplicates(const Mesh& mesh) {
   std::vector<Triangle> sorted(mesh.triangles);
   for (Triangle& t : sorted) std::sort(t.begin(), t.end());
-  std::sort(sorted.begin(), sorted.end());
+  tbb::parallel_sort(sorted.begin(), sorted.end());  // equal triangles end up adjacent either way
   std::uint64_t duplicates = 0;
   for (std::size_t i = 1; i < sorted.size(); ++i) duplicates += sorted[i] == sorted[i - 1];
   return duplicates;

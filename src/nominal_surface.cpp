@@ -1,11 +1,14 @@
 #include "nominal_surface.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "error.hpp"
 
@@ -117,15 +120,25 @@ void NominalSurface::compute_normals(const EdgeIncidence& incidence) {
   vertex_normals_.assign(local_.vertex_count(), Vec3{});
   edge_normals_.assign(incidence.edge_count(), Vec3{});
   edge_of_slot_ = incidence.edge_of_slot;
+  // Face normals and the angle-weighted corner contributions in parallel; the sums below
+  // stay serial, in triangle order, so they do not depend on the thread count.
+  std::vector<std::array<Vec3, 3>> corner_normals(triangles);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles, 1 << 12),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t t = range.begin(); t < range.end(); ++t) {
+                        const auto& [a, b, c] = corners_[t];
+                        if (is_degenerate_triangle(a, b, c)) continue;
+                        const Vec3 n = normalized(cross(b - a, c - a));
+                        face_normals_[t] = n;
+                        corner_normals[t] = {corner_angle(a, b, c) * n, corner_angle(b, c, a) * n,
+                                             corner_angle(c, a, b) * n};
+                      }
+                    });
   for (std::size_t t = 0; t < triangles; ++t) {
-    const auto& [a, b, c] = corners_[t];
-    if (is_degenerate_triangle(a, b, c)) continue;
-    const Vec3 n = normalized(cross(b - a, c - a));
-    face_normals_[t] = n;
+    if (face_normals_[t] == Vec3{}) continue;  // degenerate (a real unit normal is never zero)
+    const Vec3 n = face_normals_[t];
     const Triangle& tri = local_.triangles[t];
-    vertex_normals_[tri[0]] += corner_angle(a, b, c) * n;
-    vertex_normals_[tri[1]] += corner_angle(b, c, a) * n;
-    vertex_normals_[tri[2]] += corner_angle(c, a, b) * n;
+    for (int k = 0; k < 3; ++k) vertex_normals_[tri[k]] += corner_normals[t][k];
     for (std::size_t k = 0; k < 3; ++k) {
       const std::uint32_t edge = edge_of_slot_[3 * t + k];
       if (edge != kNoEdge) edge_normals_[edge] += n;
