@@ -26,8 +26,9 @@
 // one growing chunk of 4096 triangles per thread. Four cells per triangle, not more: the
 // search costs the same per query over a wide range of cell sizes (0.2 to 1.0 mm measured
 // on a 1.6 M-triangle nominal whose default cell is 0.2 mm), while offsets cost 8 bytes a
-// cell in memory, in the grid file and in the time to write it. One exact test per candidate cell. The same
-// bounds apply to a cell size given as an option; GridStatistics says when it grew.
+// cell in memory, in the grid file and in the time to write it. One exact test per
+// candidate cell. The same bounds apply to a cell size given as an option; GridStatistics
+// says when it grew.
 //
 // Parallel over triangles with oneTBB; the result does not depend on the thread count.
 #pragma once
