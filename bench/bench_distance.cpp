@@ -171,7 +171,7 @@ void BM_WorkloadGrid(benchmark::State& state) {
 }
 
 // build_uniform_grid alone (no reading, welding, topology or writing) on the nominal named
-// by NCV_BENCH_GRID_NOMINAL_<arg> (scripts/bench.sh: 0, 1, 2 for 17 k, 170 k, 1.7 M).
+// by NCV_BENCH_GRID_NOMINAL_<arg> (scripts/bench.sh: 0 to 3 for 17 k, 170 k, 1 M, 1.7 M).
 void BM_WorkloadGridBuild(benchmark::State& state) {
   const std::string name = "NCV_BENCH_GRID_NOMINAL_" + std::to_string(state.range(0));
   const char* path = std::getenv(name.c_str());
@@ -193,6 +193,7 @@ BENCHMARK(BM_WorkloadGridBuild)
     ->Arg(0)
     ->Arg(1)
     ->Arg(2)
+    ->Arg(3)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(BM_WorkloadGrid)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
