@@ -18,6 +18,7 @@ import tempfile
 import time
 
 NCV, MICRO, LARGE = sys.argv[1], sys.argv[2], sys.argv[3]
+PROFILE = sys.argv[4] if len(sys.argv) > 4 else ""  # ncverify_search_profile
 REPS = int(os.environ.get("NCV_BENCH_REPS", "3"))
 QUICK = os.environ.get("NCV_BENCH_QUICK") == "1"
 STAGES = [("roughing", "core_roughing.stl"), ("semifinishing", "core_semifinishing.stl"),
@@ -200,6 +201,16 @@ def main():
           f"{t['triangles_tested_per_sample']:>8.2f}{t['total']:>9.2f}"
           f"{t['peak_memory_bytes'] / 2**20:>9.0f}")
     p("")
+    if os.path.exists(PROFILE):
+        p("== Search by the samples' distance to the nominal (finishing, 1 thread, search only) ==")
+        for label, path in (NOMINALS[0], NOMINALS[-1]):
+            if not os.path.exists(path):
+                continue
+            out = subprocess.run([PROFILE, os.path.join(LARGE, "core_finishing.stl"), path],
+                                 stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True,
+                                 check=True).stdout
+            p(f"-- {label} nominal: " + out.rstrip())
+        p("")
     p("== Grid build (2 threads, median; command = read, weld, topology, grid, write) ==")
     p(f"{'nominal':<8}{'triangles':>10}{'cells':>10}{'refs/tri':>9}{'B/tri':>7}{'command s':>10}"
       f"{'grid alone s':>13}")
