@@ -62,7 +62,23 @@ def run(workpiece, nominal, threads, scheme="all", step="0.1%"):
 
 
 def median_run(workpiece, nominal, threads, reps=REPS, **kw):
-    runs = [run(workpiece, nominal, threads, **kw) for _ in range(reps)]
+    return summarise([run(workpiece, nominal, threads, **kw) for _ in range(reps)])
+
+
+def paired_runs(workpiece, nominal, reps):
+    """1- and 2-thread runs alternating, so that each pair sees the same machine; returns
+    both summaries and the median of the pairs' distance-phase speed-ups."""
+    ones, twos = [], []
+    for _ in range(reps):
+        ones.append(run(workpiece, nominal, 1))
+        twos.append(run(workpiece, nominal, 2))
+    speedup = statistics.median(a[0]["phases"]["distance"] / b[0]["phases"]["distance"]
+                                for a, b in zip(ones, twos))
+    return summarise(ones), summarise(twos), speedup
+
+
+def summarise(runs):
+    """Median phase times and total, the largest peak memory, the first run's report."""
     t = dict(runs[0][0])
     t["phases"] = {p: statistics.median(r[0]["phases"][p] for r in runs) for p in PHASES}
     t["total"] = statistics.median(r[0]["total"] for r in runs)
@@ -126,14 +142,16 @@ def main():
     p = lines.append
 
     # Table 1 and Table 2: every stage, both schemes, 2 threads.
+    # The finishing targets compare 1 and 2 threads: runs in alternating pairs, and more of
+    # them, as the machine is shared.
+    (fin1, _), finishing2, speedup = paired_runs(os.path.join(LARGE, "core_finishing.stl"),
+                                                 NOMINAL, max(REPS, 7))
     t1 = {}
     for stage, file in STAGES:
         for scheme in ("all", "paper-ii"):
-            # The finishing targets compare 1 and 2 threads: more runs, as the machine is shared.
-            reps = max(REPS, 5) if (stage == "finishing" and scheme == "all") else 1
-            t1[(stage, scheme)] = median_run(os.path.join(LARGE, file), NOMINAL, 2, reps=reps,
-                                             scheme=scheme)
-    fin1, _ = median_run(os.path.join(LARGE, "core_finishing.stl"), NOMINAL, 1, reps=max(REPS, 5))
+            t1[(stage, scheme)] = (finishing2 if (stage, scheme) == ("finishing", "all") else
+                                   median_run(os.path.join(LARGE, file), NOMINAL, 2, reps=1,
+                                              scheme=scheme))
     fin2, _ = t1[("finishing", "all")]
 
     p("== Stages (δ = 0.1 %, 2 threads; time in seconds; paper: Table 1) ==")
@@ -232,7 +250,8 @@ def main():
     target("distance, 2 threads (run)", f"{rate2 / 1e6:.2f} M samples/s", ">= 10 M/s",
            rate2 >= 10e6)
     target("distance, 1 thread (run)", f"{rate1 / 1e6:.2f} M samples/s", "-", True)
-    target("2 threads vs 1 (run, wall)", f"{rate2 / rate1:.2f}x", ">= 1.85x", rate2 / rate1 >= 1.85)
+    target("2 threads vs 1 (run, wall)", f"{speedup:.2f}x (median of pairs)", ">= 1.85x",
+           speedup >= 1.85)
     if m and 1 in m and 2 in m:
         target("distance, 2 threads (micro)", f"{m[2]['rate'] / 1e6:.2f} M samples/s", ">= 10 M/s",
                m[2]["rate"] >= 10e6)

@@ -17,7 +17,7 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DNCV_NATIVE=OFF >&2
 cmake --build "$build" --target ncverify ncgen >&2
 micro="$build/bench/ncverify_microbench"
 if cmake --build "$build" --target help | grep -q ncverify_microbench; then
-  cmake --build "$build" --target ncverify_microbench >&2
+  cmake --build "$build" --target ncverify_microbench ncverify_search_profile >&2
 fi
 ncgen="$build/tools/ncgen/ncgen"
 
@@ -33,4 +33,5 @@ fi
 [ -f "$large/core_nominal_1700k.stl" ] ||
   "$ncgen" nominal -o "$large/core_nominal_1700k.stl" --tolerance 0.0003 --level 11 >&2
 
-exec /usr/bin/python3 bench/bench_table.py "$build/ncverify" "$micro" "$large"
+exec /usr/bin/python3 bench/bench_table.py "$build/ncverify" "$micro" "$large" \
+  "$build/bench/ncverify_search_profile"
