@@ -59,7 +59,7 @@ void add_colorize_options(CLI::App& sub, ColorizeOptions& options) {
       ->check(CLI::IsMember({"tolerance", "diverging", "turbo"}));
   sub.add_option("--range", options.range,
                  "Values the colour map spans, LO:HI or R for ±R (default: from the data)")
-      ->check(valid_zone());
+      ->check(valid_range());
   sub.add_flag("--refine", options.refine,
                "Write the sampling lattice as the mesh, so every sample's error shows");
   sub.add_option("--legend", options.legend_svg, "Also write the colour bar as SVG");

@@ -8,6 +8,7 @@
 #include "container.hpp"
 #include "error.hpp"
 #include "input_bytes.hpp"
+#include "option_checks.hpp"
 #include "output_file.hpp"
 
 namespace ncv::cmd {
@@ -142,7 +143,7 @@ void add_inspect_command(CLI::App& app, CommandContext&) {
   sub->add_option("file", options->file, "Samples, grid or distance file (- = stdin)")->required();
   auto* json = sub->add_flag("--json", options->json, "Header and metadata as JSON");
   sub->add_flag("--csv", options->csv, "Records as CSV (one row per record)")->excludes(json);
-  sub->add_option("--head", options->head, "Only the first N records");
+  sub->add_option("--head", options->head, "Only the first N records")->check(valid_count());
   sub->add_option("-o,--output", options->output, "Where to write (default: standard output)");
   sub->callback([options] { run_inspect(*options); });
 }

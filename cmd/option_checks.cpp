@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 
 #include "error.hpp"
 #include "sampling_step.hpp"
@@ -36,6 +37,17 @@ CLI::Validator valid_zone() {
   return refusing([](const std::string& text) { parse_tolerance(text); });
 }
 
+CLI::Validator valid_range() {
+  return refusing([](const std::string& text) {
+    const Tolerance range = parse_tolerance(text);
+    if (!(range.lower < range.upper)) {
+      throw UsageError("range '" + text +
+                       "' has no width: its lower limit must be below its "
+                       "upper limit");
+    }
+  });
+}
+
 CLI::Validator valid_positive_length() {
   return refusing([](const std::string& text) {
     double value = 0;
@@ -43,6 +55,16 @@ CLI::Validator valid_positive_length() {
     if (text.empty() || error != std::errc() || end != text.data() + text.size() ||
         !std::isfinite(value) || !(value > 0)) {
       throw UsageError("'" + text + "' is not a positive length in model units");
+    }
+  });
+}
+
+CLI::Validator valid_count() {
+  return refusing([](const std::string& text) {
+    std::int64_t value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || error != std::errc() || end != text.data() + text.size() || value < 0) {
+      throw UsageError("'" + text + "' is not a count (a whole number, 0 or more)");
     }
   });
 }

@@ -15,7 +15,7 @@ void add_report_options(CLI::App& sub, ReportOptions& options) {
   sub.add_option("--bins", options.bins, "Histogram bins")->capture_default_str();
   sub.add_option("--histogram-range", options.range,
                  "Histogram range LO:HI (default: d_min to d_max)")
-      ->check(valid_zone());
+      ->check(valid_range());
   sub.add_option("--regions", options.regions, "Out-of-tolerance regions listed")
       ->capture_default_str();
   sub.add_option("--histogram-svg", options.histogram_svg,

@@ -111,6 +111,12 @@ expect_bad_input "run refuses a bad tolerance before any work" "--tol: tolerance
   runout "$NCVERIFY" run box.stl box.stl -d runout --tol 0,1
 expect_bad_input "colour range that does not parse" "--range: tolerance 'wide'" out15 \
   "$NCVERIFY" colorize good.dist -o out15 --range wide
+expect_bad_input "colour range of no width" "--range: range '1:1' has no width" out15 \
+  "$NCVERIFY" colorize good.dist -o out15 --range 1:1
+expect_bad_input "histogram range of no width" "--histogram-range: range '0' has no width" "" \
+  "$NCVERIFY" stats good.dist --histogram-range 0
+expect_bad_input "negative record count" "--head: '-5' is not a count" out15 \
+  "$NCVERIFY" inspect good.dist --csv --head -5 -o out15
 expect_bad_input "cell size zero" "--cell: '0' is not a positive length" out15 \
   "$NCVERIFY" grid-build box.stl -o out15 --cell 0
 expect_bad_input "unknown option" "The following argument was not expected: --stepp" out15 \
