@@ -16,9 +16,9 @@
 
 #include "grid_builder.hpp"
 #include "mesh_reader.hpp"
-#include "sampling.hpp"
 #include "signed_distance.hpp"
 #include "winding_number.hpp"
+#include "workload.hpp"
 
 namespace {
 
@@ -127,30 +127,19 @@ void BM_WindingTreeBuild(benchmark::State& state) {
 
 // The real finishing workload when NCV_BENCH_WORKPIECE and NCV_BENCH_NOMINAL name STL files
 // (scripts/bench.sh sets them): the workpiece sampled at 0.1 % against the nominal's grid.
-struct Workload {
-  std::unique_ptr<ncv::NominalSurface> nominal;
-  ncv::UniformGrid grid;
-  std::vector<Vec3> points;
-};
-
-const Workload* workload() {
-  static const std::unique_ptr<Workload> instance = []() -> std::unique_ptr<Workload> {
+const ncv::bench::Workload* workload() {
+  static const std::unique_ptr<ncv::bench::Workload> instance =
+      []() -> std::unique_ptr<ncv::bench::Workload> {
     const char* workpiece = std::getenv("NCV_BENCH_WORKPIECE");
     const char* nominal = std::getenv("NCV_BENCH_NOMINAL");
     if (!workpiece || !nominal) return nullptr;
-    auto w = std::make_unique<Workload>();
-    w->nominal = std::make_unique<ncv::NominalSurface>(ncv::read_mesh(nominal), nominal);
-    w->grid = ncv::build_uniform_grid(*w->nominal);
-    ncv::Mesh mesh = ncv::read_mesh(workpiece);
-    const double step = 0.001 * ncv::bounding_box(mesh).diagonal();
-    w->points = ncv::sample_mesh(std::move(mesh), step, ncv::SamplingScheme::all).positions;
-    return w;
+    return std::make_unique<ncv::bench::Workload>(ncv::bench::load_workload(workpiece, nominal));
   }();
   return instance.get();
 }
 
 void BM_WorkloadGrid(benchmark::State& state) {
-  const Workload* w = workload();
+  const ncv::bench::Workload* w = workload();
   if (!w) {
     state.SkipWithError("NCV_BENCH_WORKPIECE / NCV_BENCH_NOMINAL not set");
     return;

@@ -15,10 +15,8 @@
 #include <vector>
 
 #include "closest_point_search.hpp"
-#include "grid_builder.hpp"
-#include "mesh_reader.hpp"
 #include "reference_boxes.hpp"
-#include "sampling.hpp"
+#include "workload.hpp"
 
 namespace {
 
@@ -40,12 +38,10 @@ int main(int argc, char** argv) {
     return 2;
   }
   const double fraction = argc > 3 ? std::atof(argv[3]) : 0.001;
-  const ncv::NominalSurface nominal(ncv::read_mesh(argv[2]), argv[2]);
-  const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal);
-  ncv::Mesh workpiece = ncv::read_mesh(argv[1]);
-  const double step = fraction * ncv::bounding_box(workpiece).diagonal();
-  std::vector<ncv::Vec3> points =
-      ncv::sample_mesh(std::move(workpiece), step, ncv::SamplingScheme::all).positions;
+  ncv::bench::Workload w = ncv::bench::load_workload(argv[1], argv[2], fraction);
+  const ncv::NominalSurface& nominal = *w.nominal;
+  const ncv::UniformGrid& grid = w.grid;
+  std::vector<ncv::Vec3>& points = w.points;
   for (ncv::Vec3& p : points) p = nominal.to_local(p);
 
   const auto boxes = ncv::build_reference_boxes(nominal.corners(), grid);
