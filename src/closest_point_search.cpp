@@ -15,10 +15,6 @@ double gap(double q, double lo, double hi) {
   return std::max(std::max(lo - q, q - hi), 0.0);
 }
 
-double max_abs(Vec3 v) {
-  return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-}
-
 // Lanes k of the block starting at reference `first` with begin <= first + k < end.
 unsigned cell_lanes(std::uint64_t first, std::uint64_t begin, std::uint64_t end) {
   constexpr unsigned all = (1u << kBoxLanes) - 1;
@@ -63,16 +59,13 @@ struct GridSearch::Query {
 
 GridSearch::GridSearch(std::span<const TriangleCorners> triangles, const UniformGrid& grid,
                        std::span<const BoxBlock> boxes)
-    : triangles_(triangles),
-      grid_(grid),
-      boxes_(boxes),
-      box_(grid.bounds()),
-      stamps_(triangles.size(), 0) {
-  scale_ = std::max(max_abs(box_.min), max_abs(box_.max));
+    : triangles_(triangles), grid_(grid), boxes_(boxes), stamps_(triangles.size(), 0) {
+  const BoundingBox box = grid.bounds();
+  scale_ = std::max(max_abs(box.min), max_abs(box.max));
   for (int axis = 0; axis < 3; ++axis) {
     origin_[axis] = grid.origin[axis];
-    box_min_[axis] = box_.min[axis];
-    box_max_[axis] = box_.max[axis];
+    box_min_[axis] = box.min[axis];
+    box_max_[axis] = box.max[axis];
     last_cell_[axis] = std::int64_t{grid.dims[axis]} - 1;
   }
   inverse_cell_ = 1.0 / grid.cell_size;

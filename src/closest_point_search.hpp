@@ -106,7 +106,6 @@ class GridSearch {
   std::span<const TriangleCorners> triangles_;
   const UniformGrid& grid_;
   std::span<const BoxBlock> boxes_;
-  BoundingBox box_;
   // The grid's origin, box and last cell index by axis.
   std::array<double, 3> origin_, box_min_, box_max_;
   std::array<std::int64_t, 3> last_cell_;

@@ -102,7 +102,7 @@ void check_mesh(const Mesh& mesh, const std::string& source) {
     // The bound the distance step holds nominal and query points to (squares of such
     // coordinates would overflow); a workpiece beyond it used to get as far as a sampling
     // step of "inf".
-    if (std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) > kMaxNominalCoordinate) {
+    if (max_abs(p) > kMaxNominalCoordinate) {
       throw InputError(source, fmt::format("a vertex lies beyond {}", kMaxNominalCoordinate));
     }
   }

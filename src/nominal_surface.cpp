@@ -24,7 +24,7 @@ void check_usable(const Mesh& mesh, const std::string& source) {
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
     const Vec3 p = mesh.vertices[v];
     if (!is_finite(p)) throw InputError(source, fmt::format("nominal vertex {} is not finite", v));
-    if (std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) > kMaxNominalCoordinate) {
+    if (max_abs(p) > kMaxNominalCoordinate) {
       throw InputError(source,
                        fmt::format("nominal vertex {} lies beyond {}", v, kMaxNominalCoordinate));
     }

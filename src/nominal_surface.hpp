@@ -35,7 +35,7 @@
 
 namespace ncv {
 
-// Keeps slot indices (3 per triangle) and grid cell indices (<= 8 per triangle) in 32 bits.
+// Keeps slot indices (3 per triangle) and grid cell indices (<= 4 per triangle) in 32 bits.
 inline constexpr std::size_t kMaxNominalTriangles = std::size_t{1} << 28;
 // Far beyond any part in any unit, and far enough below the double range that squared
 // distances and cross products of coordinates cannot overflow.

@@ -31,8 +31,7 @@ void check_inputs(std::span<const Vec3> points, std::span<const Vec3> sample_nor
       [&](const tbb::blocked_range<std::size_t>& range, std::size_t first) {
         for (std::size_t i = range.begin(); i < range.end() && i < first; ++i) {
           const Vec3 p = points[i];
-          if (!is_finite(p) ||
-              std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) > kMaxNominalCoordinate) {
+          if (!is_finite(p) || max_abs(p) > kMaxNominalCoordinate) {
             return i;
           }
         }

@@ -61,6 +61,11 @@ constexpr Vec3 component_min(Vec3 a, Vec3 b) {
 constexpr Vec3 component_max(Vec3 a, Vec3 b) {
   return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
 }
+// The largest coordinate magnitude (the Chebyshev norm): how far from the origin a point's
+// coordinates reach, the scale the search's margins and coordinate limits refer to.
+inline double max_abs(Vec3 a) {
+  return std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z)});
+}
 inline bool is_finite(Vec3 a) {
   return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
 }
