@@ -7,6 +7,7 @@
 
 #include "error.hpp"
 #include "memory_guard.hpp"
+#include "nominal_fixtures.hpp"
 #include "sampling.hpp"
 
 using namespace ncv;
@@ -15,26 +16,7 @@ namespace {
 
 // Twelve triangles of 50 mm^2: at a step of 1e-9 each would have about 2 * 10^18 samples.
 Mesh box() {
-  return {{{0, 0, 0},
-           {10, 0, 0},
-           {10, 10, 0},
-           {0, 10, 0},
-           {0, 0, 10},
-           {10, 0, 10},
-           {10, 10, 10},
-           {0, 10, 10}},
-          {{0, 2, 1},
-           {0, 3, 2},
-           {4, 5, 6},
-           {4, 6, 7},
-           {0, 1, 5},
-           {0, 5, 4},
-           {1, 2, 6},
-           {1, 6, 5},
-           {2, 3, 7},
-           {2, 7, 6},
-           {3, 0, 4},
-           {3, 4, 7}}};
+  return fixtures::box({0, 0, 0}, {10, 10, 10});
 }
 
 }  // namespace
