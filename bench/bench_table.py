@@ -132,8 +132,9 @@ def micro():
     return result
 
 
-def fmt_s(x):
-    return f"{x:.3f}"
+def ns_per_sample(t):
+    """The distance phase's wall time per sample, in nanoseconds."""
+    return t["phases"]["distance"] / t["samples"] * 1e9
 
 
 def main():
@@ -208,14 +209,14 @@ def main():
       f"{'peak MB':>9}")
     for s, t in step_growth:
         p(f"{s:<8}{t['samples']:>10}{t['phases']['distance']:>11.3f}"
-          f"{t['phases']['distance'] / t['samples'] * 1e9:>10.1f}"
+          f"{ns_per_sample(t):>10.1f}"
           f"{t['triangles_tested_per_sample']:>8.2f}{t['total']:>9.2f}"
           f"{t['peak_memory_bytes'] / 2**20:>9.0f}")
     p(f"{'nominal':<8}{'tri':>10}{'grid s':>11}{'ns/sample':>10}{'tested':>8}{'total s':>9}"
       f"{'peak MB':>9}")
     for label, t in nominal_growth:
         p(f"{label:<8}{t['nominal_triangles']:>10}{t['phases']['grid-build']:>11.3f}"
-          f"{t['phases']['distance'] / t['samples'] * 1e9:>10.1f}"
+          f"{ns_per_sample(t):>10.1f}"
           f"{t['triangles_tested_per_sample']:>8.2f}{t['total']:>9.2f}"
           f"{t['peak_memory_bytes'] / 2**20:>9.0f}")
     p("")
@@ -284,18 +285,13 @@ def main():
                    g["bytes_per_triangle"] < 100)
     target("peak memory, finishing", f"{fin2['peak_memory_bytes'] / 2**20:.0f} MB", "< 1 GB",
            fin2["peak_memory_bytes"] < 2**30)
-    if len(step_growth) >= 2:
-        a, b = step_growth[0][1], step_growth[-1][1]
-        ca = a["phases"]["distance"] / a["samples"]
-        cb = b["phases"]["distance"] / b["samples"]
-        target(f"ns/sample {step_growth[-1][0]} vs {step_growth[0][0]}",
-               f"{cb * 1e9:.0f} / {ca * 1e9:.0f} = {cb / ca:.2f}", "nearly flat", cb / ca < 2)
-    if len(nominal_growth) >= 2:
-        a, b = nominal_growth[0][1], nominal_growth[-1][1]
-        ca = a["phases"]["distance"] / a["samples"]
-        cb = b["phases"]["distance"] / b["samples"]
-        target(f"ns/sample {nominal_growth[-1][0]} vs 17 k nominal",
-               f"{cb * 1e9:.0f} / {ca * 1e9:.0f} = {cb / ca:.2f}", "nearly flat", cb / ca < 2)
+    for growth, unit in ((step_growth, ""), (nominal_growth, " nominal")):
+        if len(growth) >= 2:
+            (first, a), (last, b) = growth[0], growth[-1]
+            ratio = ns_per_sample(b) / ns_per_sample(a)
+            target(f"ns/sample {last} vs {first}{unit}",
+                   f"{ns_per_sample(b):.0f} / {ns_per_sample(a):.0f} = {ratio:.2f}", "nearly flat",
+                   ratio < 2)
 
     p("== Targets (finishing workload, 1.28 M samples vs 16,922 nominal triangles) ==")
     p(f"{'target':<36}{'measured':<34}{'goal':<24}met")
