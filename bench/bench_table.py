@@ -116,7 +116,8 @@ def micro():
         env[f"NCV_BENCH_GRID_NOMINAL_{i}"] = path
     out = subprocess.run([MICRO, "--benchmark_filter=WorkloadGrid", "--benchmark_format=json",
                           f"--benchmark_repetitions={max(REPS, 3)}",
-                          "--benchmark_report_aggregates_only=true"], env=env,
+                          "--benchmark_report_aggregates_only=true",
+                          "--benchmark_enable_random_interleaving=true"], env=env,
                          stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, check=True)
     result = {}
     for b in json.loads(out.stdout)["benchmarks"]:

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <utility>
 
 #include "box_lanes.hpp"
 
@@ -22,6 +23,22 @@ unsigned cell_lanes(std::uint64_t first, std::uint64_t begin, std::uint64_t end)
   if (first < begin) lanes &= all << (begin - first);
   if (end - first < kBoxLanes) lanes &= (1u << (end - first)) - 1;
   return lanes & all;
+}
+
+struct Candidate {
+  std::uint32_t triangle;
+  float squared;  // its box's squared float gap to the query
+};
+
+// The candidate whose box is nearest goes first: its triangle is the likeliest to be the
+// closest, and once tested, the shrunken bound skips more of the others (on a fine nominal,
+// 3.59 -> 2.98 exact tests per sample). A full sort costs more than it saves.
+void move_nearest_box_first(Candidate* found, std::size_t count) {
+  std::size_t nearest = 0;
+  for (std::size_t k = 1; k < count; ++k) {
+    if (found[k].squared < found[nearest].squared) nearest = k;
+  }
+  if (nearest != 0) std::swap(found[0], found[nearest]);
 }
 
 }  // namespace
@@ -155,10 +172,6 @@ void GridSearch::visit_cell(Query& query, std::uint64_t cell) {
   const std::uint64_t begin = grid_.cell_offsets[cell];
   const std::uint64_t end = grid_.cell_offsets[cell + 1];
   query.counters->triangles_considered += end - begin;
-  struct Candidate {
-    std::uint32_t triangle;
-    float squared;
-  };
   constexpr std::size_t kCapacity = 32;
   std::uint64_t first = begin - begin % kBoxLanes;
   while (first < end) {
@@ -176,6 +189,7 @@ void GridSearch::visit_cell(Query& query, std::uint64_t cell) {
     }
     // The candidates' corners are requested together, so their cache misses overlap.
     for (std::size_t k = 0; k < count; ++k) __builtin_prefetch(&triangles_[found[k].triangle]);
+    move_nearest_box_first(found, count);
     for (std::size_t k = 0; k < count; ++k) {
       if (found[k].squared > query.limit) continue;
       const std::uint32_t t = found[k].triangle;

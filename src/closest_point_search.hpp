@@ -37,7 +37,8 @@
 //    block (reference_boxes.hpp) and measured four at a time with a conservative float
 //    test (box_lanes.hpp): a box is only skipped when its exact distance exceeds the bound,
 //    so by the argument above the kernel's value for its triangle would be strictly greater
-//    than best: skipping it cannot change the result. A cell's boxes are read contiguously.
+//    than best: skipping it cannot change the result. A cell's boxes are read contiguously;
+//    of the triangles whose boxes pass, the one with the nearest box is tested first.
 // SearchCounters::triangles_tested counts exact kernel evaluations only (the paper's
 // Table 2 statistic); triangles_considered counts the cell-list entries read (each checked
 // against its box; a triangle listed in two visited cells counts twice) plus the hint.
