@@ -90,6 +90,8 @@ class GridSearch {
   ClosestHit closest(Vec3 q, SearchCounters& counters);
   // The next query starts without the previous one's closest triangle.
   void forget_hint() { hint_ = kNoTriangle; }
+  // The next query starts with triangle t instead (a valid index; the result is the same).
+  void set_hint(std::uint32_t t) { hint_ = t; }
 
  private:
   struct Query;
