@@ -1,5 +1,6 @@
 #include "vertex_welder.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 
@@ -33,8 +34,12 @@ VertexWelder::VertexWelder(std::size_t expected_vertices) {
 }
 
 std::uint32_t VertexWelder::weld(Vec3 p) {
+  return weld(p, hash_bits(coordinate_bits(p)));
+}
+
+std::uint32_t VertexWelder::weld(Vec3 p, std::size_t hash) {
   const auto bits = coordinate_bits(p);
-  for (std::size_t slot = hash_bits(bits) & mask_;; slot = (slot + 1) & mask_) {
+  for (std::size_t slot = hash & mask_;; slot = (slot + 1) & mask_) {
     const std::uint32_t entry = slots_[slot];
     if (entry == 0) {
       const auto index = static_cast<std::uint32_t>(vertices_.size());
@@ -51,18 +56,26 @@ std::uint32_t VertexWelder::weld(Vec3 p) {
 
 void VertexWelder::weld_all(std::span<const Vec3> points, std::span<std::uint32_t> indices) {
   // The slot of the point kSlotsAhead on is fetched; once it has arrived (kKeysAhead on),
-  // the key it names.
+  // the key it names. Each point is hashed once: hashes[j % kSlotsAhead] holds point j's
+  // hash for the kSlotsAhead points from the current one on.
   constexpr std::size_t kSlotsAhead = 16, kKeysAhead = 8;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (i + kSlotsAhead < points.size()) {
-      __builtin_prefetch(&slots_[hash_bits(coordinate_bits(points[i + kSlotsAhead])) & mask_]);
+  const std::size_t count = points.size();
+  std::array<std::size_t, kSlotsAhead> hashes{};
+  for (std::size_t j = 0; j < std::min(count, kSlotsAhead); ++j) {
+    hashes[j] = hash_bits(coordinate_bits(points[j]));
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t hash = hashes[i % kSlotsAhead];
+    if (i + kSlotsAhead < count) {
+      const std::size_t ahead = hash_bits(coordinate_bits(points[i + kSlotsAhead]));
+      hashes[i % kSlotsAhead] = ahead;
+      __builtin_prefetch(&slots_[ahead & mask_]);
     }
-    if (i + kKeysAhead < points.size()) {
-      const std::uint32_t entry =
-          slots_[hash_bits(coordinate_bits(points[i + kKeysAhead])) & mask_];
+    if (i + kKeysAhead < count) {
+      const std::uint32_t entry = slots_[hashes[(i + kKeysAhead) % kSlotsAhead] & mask_];
       if (entry != 0) __builtin_prefetch(&keys_[entry - 1]);
     }
-    indices[i] = weld(points[i]);
+    indices[i] = weld(points[i], hash);
   }
 }
 

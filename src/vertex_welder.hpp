@@ -22,6 +22,7 @@ class VertexWelder {
   std::vector<Vec3> take_vertices() { return std::move(vertices_); }
 
  private:
+  std::uint32_t weld(Vec3 p, std::size_t hash);  // hash = hash_bits of p's coordinates
   void grow();
 
   std::vector<std::array<std::uint64_t, 3>> keys_;
