@@ -67,25 +67,49 @@ inline unsigned near_lanes_scalar(const BoxBlock& block, const float q[3], float
   return near;
 }
 
-inline unsigned near_lanes(const BoxBlock& block, const float q[3], float limit,
+// The query point and the limit in every lane, made once for the blocks of a cell rather
+// than once per block.
+struct LaneQuery {
+#if defined(__SSE2__)
+  __m128 point[3];
+  __m128 limit;
+#else
+  float point[3];
+  float limit;
+#endif
+};
+
+inline LaneQuery lane_query(const float q[3], float limit) {
+#if defined(__SSE2__)
+  return {{_mm_set1_ps(q[0]), _mm_set1_ps(q[1]), _mm_set1_ps(q[2])}, _mm_set1_ps(limit)};
+#else
+  return {{q[0], q[1], q[2]}, limit};
+#endif
+}
+
+inline unsigned near_lanes(const BoxBlock& block, const LaneQuery& query,
                            float squared[kBoxLanes]) {
 #if defined(__SSE2__)
   const __m128 zero = _mm_setzero_ps();
   __m128 sum = zero;
   for (int axis = 0; axis < 3; ++axis) {
-    const __m128 point = _mm_set1_ps(q[axis]);
-    const __m128 below = _mm_sub_ps(_mm_load_ps(block.lo[axis]), point);
-    const __m128 above = _mm_sub_ps(point, _mm_load_ps(block.hi[axis]));
+    const __m128 below = _mm_sub_ps(_mm_load_ps(block.lo[axis]), query.point[axis]);
+    const __m128 above = _mm_sub_ps(query.point[axis], _mm_load_ps(block.hi[axis]));
     // _mm_max_ps(a, b) is a > b ? a : b, as std::max(b, a) is: the same value for non-NaN
     // input, and no NaN arises (finite or infinite boxes, finite query, see above).
     const __m128 gap = _mm_max_ps(_mm_max_ps(below, above), zero);
     sum = axis == 0 ? _mm_mul_ps(gap, gap) : _mm_add_ps(sum, _mm_mul_ps(gap, gap));
   }
   _mm_storeu_ps(squared, sum);
-  return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(sum, _mm_set1_ps(limit))));
+  return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(sum, query.limit)));
 #else
-  return near_lanes_scalar(block, q, limit, squared);
+  return near_lanes_scalar(block, query.point, query.limit, squared);
 #endif
+}
+
+inline unsigned near_lanes(const BoxBlock& block, const float q[3], float limit,
+                           float squared[kBoxLanes]) {
+  return near_lanes(block, lane_query(q, limit), squared);
 }
 
 }  // namespace ncv

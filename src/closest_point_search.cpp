@@ -164,9 +164,9 @@ void GridSearch::visit_shell(Query& query, std::int64_t m) {
 }
 
 // Two passes per chunk of blocks, so that the box tests run without a branch per lane: the
-// first measures the blocks and appends every passing lane to `found` (each lane is written,
-// the count only advances for passing ones); the second tests those, re-checking each box
-// against the bound, which may have shrunk since.
+// first measures the blocks and appends every passing lane to `found` (each lane of a block
+// with any is written, the count only advances for passing ones); the second tests those,
+// re-checking each box against the bound, which may have shrunk since.
 void GridSearch::visit_cell(Query& query, std::uint64_t cell) {
   ++query.counters->cells_visited;
   const std::uint64_t begin = grid_.cell_offsets[cell];
@@ -177,11 +177,13 @@ void GridSearch::visit_cell(Query& query, std::uint64_t cell) {
   while (first < end) {
     Candidate found[kCapacity];
     std::size_t count = 0;
+    const LaneQuery near = lane_query(query.point, query.limit);
     for (; first < end && count + kBoxLanes <= kCapacity; first += kBoxLanes) {
       const BoxBlock& block = boxes_[first / kBoxLanes];
       float squared[kBoxLanes] = {0, 0, 0, 0};
       unsigned lanes = cell_lanes(first, begin, end);
-      if (query.filter) lanes &= near_lanes(block, query.point, query.limit, squared);
+      if (query.filter) lanes &= near_lanes(block, near, squared);
+      if (lanes == 0) continue;  // most blocks of a dense cell
       for (int lane = 0; lane < kBoxLanes; ++lane) {
         found[count] = {block.triangle[lane], squared[lane]};
         count += (lanes >> lane) & 1u;
