@@ -120,7 +120,8 @@ ClosestHit GridSearch::closest(Vec3 q, SearchCounters& counters) {
   visit_cell(query, grid_.cell_index(static_cast<std::uint32_t>(query.centre[0]),
                                      static_cast<std::uint32_t>(query.centre[1]),
                                      static_cast<std::uint32_t>(query.centre[2])));
-  if (covers_grid(query) || unvisited_squared_distance(query) > query.bound_sq) {
+  if (bound_inside_start_cell(query) || covers_grid(query) ||
+      unvisited_squared_distance(query) > query.bound_sq) {
     hint_ = query.best.triangle;
     return query.best;
   }
@@ -215,6 +216,20 @@ void GridSearch::test(Query& query, std::uint32_t t) {
 // Distance from q to cell slab i along the axis.
 double GridSearch::cell_gap(const Query& query, int axis, std::int64_t i) const {
   return gap(query.at[axis], cell_bound(axis, i), cell_bound(axis, i + 1));
+}
+
+// The usual way a search ends: q lies in its start cell (the only cell visited so far) and
+// every face of the cell is farther than the bound, so the unvisited part of the grid is
+// too. Six differences instead of unvisited_squared_distance's slabs; when it fails (a
+// bound reaching out of the cell, or q outside the grid), the exact rule decides.
+bool GridSearch::bound_inside_start_cell(const Query& query) const {
+  double nearest_face = std::numeric_limits<double>::infinity();
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::int64_t i = query.centre[axis];
+    nearest_face = std::min(nearest_face, query.at[axis] - cell_bound(axis, i));
+    nearest_face = std::min(nearest_face, cell_bound(axis, i + 1) - query.at[axis]);
+  }
+  return nearest_face > 0 && nearest_face * nearest_face > query.bound_sq;
 }
 
 bool GridSearch::covers_grid(const Query& query) const {

@@ -98,6 +98,7 @@ class GridSearch {
   void visit_shell(Query& query, std::int64_t m);
   void visit_cell(Query& query, std::uint64_t cell);
   void test(Query& query, std::uint32_t t);
+  bool bound_inside_start_cell(const Query& query) const;
   bool covers_grid(const Query& query) const;
   // grid_.cell_bound(axis, i), the same expression.
   double cell_bound(int axis, std::int64_t i) const {
