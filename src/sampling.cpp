@@ -3,14 +3,20 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
 #include "error.hpp"
+#include "ordered_reduce.hpp"
 
 namespace ncv {
 namespace {
+
+constexpr std::size_t kTriangleBlock = 1 << 14;  // ordered_reduce's blocks
 
 // Lattice size a triangle gets under the scheme: scheme I lifts n < 2 to 2 (corners only),
 // scheme II leaves it unsampled (0).
@@ -38,33 +44,65 @@ std::pair<std::uint32_t, std::uint32_t> corner_lattice_coordinates(int k, std::u
 }
 
 // Numbers the mesh vertices that belong to a sampled triangle: they are samples
-// 0 .. count-1, each owned by its lowest-index sampled triangle.
+// 0 .. count-1, each owned by its lowest-index sampled triangle (found in parallel by an
+// atomic minimum, so the result does not depend on the thread count).
 std::uint32_t assign_vertex_samples(SampleSet& set) {
   const Mesh& mesh = set.workpiece;
   set.vertex_sample.assign(mesh.vertex_count(), kNoSample);
   std::vector<std::uint32_t> owner_of_vertex(mesh.vertex_count(), kNoSample);
-  std::vector<int> corner_of_vertex(mesh.vertex_count(), 0);
-  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-    if (set.tri_n[t] == 0) continue;
-    for (int k = 0; k < 3; ++k) {
-      const std::uint32_t v = mesh.triangles[t][k];
-      if (owner_of_vertex[v] != kNoSample) continue;
-      owner_of_vertex[v] = static_cast<std::uint32_t>(t);
-      corner_of_vertex[v] = k;
-    }
-  }
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, mesh.triangle_count(), 4096), [&](const auto& r) {
+        for (std::size_t t = r.begin(); t != r.end(); ++t) {
+          if (set.tri_n[t] == 0) continue;
+          const auto triangle = static_cast<std::uint32_t>(t);
+          for (const std::uint32_t v : mesh.triangles[t]) {
+            std::atomic_ref<std::uint32_t> owner(owner_of_vertex[v]);
+            std::uint32_t seen = owner.load(std::memory_order_relaxed);
+            while (triangle < seen &&
+                   !owner.compare_exchange_weak(seen, triangle, std::memory_order_relaxed)) {
+            }
+          }
+        }
+      });
   std::uint32_t count = 0;
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
-    if (owner_of_vertex[v] == kNoSample) continue;
-    set.vertex_sample[v] = count++;
     const std::uint32_t t = owner_of_vertex[v];
-    const auto [i, j] = corner_lattice_coordinates(corner_of_vertex[v], set.tri_n[t]);
+    if (t == kNoSample) continue;
+    set.vertex_sample[v] = count++;
+    const auto& corners = mesh.triangles[t];
+    const int corner = corners[0] == v ? 0 : corners[1] == v ? 1 : 2;  // the first that is v
+    const auto [i, j] = corner_lattice_coordinates(corner, set.tri_n[t]);
     set.positions.push_back(mesh.vertices[v]);
     set.owner.push_back(t);
     set.lattice_i.push_back(i);
     set.lattice_j.push_back(j);
   }
   return count;
+}
+
+// The report's counts and area, summed in blocks so that the area does not depend on the
+// thread count.
+SamplingReport sampling_report(const SampleSet& set) {
+  SamplingReport report = ordered_reduce(
+      set.tri_n.size(), kTriangleBlock, SamplingReport{},
+      [&](std::size_t begin, std::size_t end) {
+        SamplingReport part;
+        for (std::size_t t = begin; t < end; ++t) {
+          const double area = triangle_area(set.workpiece, t);
+          if (lattice_size(area, set.step) < 2) ++part.small_triangles;
+          if (area == 0) ++part.degenerate_triangles;
+          part.surface_area += area;
+        }
+        return part;
+      },
+      [](SamplingReport& total, const SamplingReport& part) {
+        total.small_triangles += part.small_triangles;
+        total.degenerate_triangles += part.degenerate_triangles;
+        total.surface_area += part.surface_area;
+      });
+  report.triangles = set.workpiece.triangle_count();
+  report.samples = set.sample_count();
+  return report;
 }
 
 bool is_corner(std::uint32_t i, std::uint32_t j, std::uint32_t n) {
@@ -114,21 +152,29 @@ std::uint64_t SampleSet::sample_at(std::size_t t, std::uint32_t i, std::uint32_t
 }
 
 std::uint64_t predicted_sample_count(const Mesh& mesh, double step, SamplingScheme scheme) {
-  std::vector<bool> vertex_used(mesh.vertex_count(), false);
-  std::uint64_t count = 0;
-  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-    const std::uint32_t n = scheme_lattice_size(triangle_area(mesh, t), step, scheme);
-    if (n == 0) continue;
-    // A tiny step gives up to 2 * 10^18 samples per triangle: the sum saturates rather
-    // than wrap to a count small enough to pass the memory guard.
-    if (__builtin_add_overflow(count, lattice_interior_count(n), &count)) {
-      return std::numeric_limits<std::uint64_t>::max();
-    }
-    for (std::uint32_t v : mesh.triangles[t]) {
-      if (!vertex_used[v]) ++count;
-      vertex_used[v] = true;
-    }
-  }
+  const std::vector<std::uint32_t> sizes = lattice_sizes(mesh, step, scheme);
+  std::vector<std::uint8_t> vertex_used(mesh.vertex_count(), 0);
+  // A tiny step gives up to 2 * 10^18 samples per triangle: the sum saturates rather than
+  // wrap to a count small enough to pass the memory guard.
+  const auto saturating_add = [](std::uint64_t& sum, std::uint64_t value) {
+    if (__builtin_add_overflow(sum, value, &sum)) sum = std::numeric_limits<std::uint64_t>::max();
+  };
+  std::uint64_t count = ordered_reduce(
+      sizes.size(), kTriangleBlock, std::uint64_t{0},
+      [&](std::size_t begin, std::size_t end) {
+        std::uint64_t interior = 0;
+        for (std::size_t t = begin; t < end; ++t) {
+          if (sizes[t] == 0) continue;
+          saturating_add(interior, lattice_interior_count(sizes[t]));
+          for (const std::uint32_t v : mesh.triangles[t]) {
+            std::atomic_ref<std::uint8_t>(vertex_used[v]).store(1, std::memory_order_relaxed);
+          }
+        }
+        return interior;
+      },
+      saturating_add);
+  saturating_add(count, static_cast<std::uint64_t>(
+                            std::count(vertex_used.begin(), vertex_used.end(), std::uint8_t{1})));
   return count;
 }
 
@@ -161,17 +207,7 @@ SampleSet sample_mesh(Mesh workpiece, double step, SamplingScheme scheme, Sampli
     }
   });
 
-  if (report) {
-    *report = {};
-    report->triangles = set.workpiece.triangle_count();
-    report->samples = set.sample_count();
-    for (std::size_t t = 0; t < set.tri_n.size(); ++t) {
-      const double area = triangle_area(set.workpiece, t);
-      if (lattice_size(area, step) < 2) ++report->small_triangles;
-      if (area == 0) ++report->degenerate_triangles;
-      report->surface_area += area;
-    }
-  }
+  if (report) *report = sampling_report(set);
   return set;
 }
 

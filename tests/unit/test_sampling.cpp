@@ -1,10 +1,14 @@
 // Lattice sampling: equation (1), lattice positions, vertex sharing, schemes I and II.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <set>
 
+#include <tbb/global_control.h>
+
+#include "nominal_fixtures.hpp"
 #include "sampling.hpp"
 
 using namespace ncv;
@@ -166,4 +170,49 @@ TEST_CASE("degenerate triangles are counted and sampled at their vertices", "[sa
   CHECK(report.degenerate_triangles == 1);
   CHECK(set.tri_n[0] == 2);
   CHECK(set.vertex_sample[2] != kNoSample);
+}
+
+TEST_CASE("a vertex sample belongs to the lowest-index sampled triangle, on any thread count",
+          "[sampling]") {
+  // Some 29 k triangles of many sizes (a torus with shuffled triangles, then every third
+  // one shrunk towards its first corner), so that ownership is decided across blocks and
+  // scheme II leaves some triangles out.
+  Mesh mesh = fixtures::torus(40, 10, 240, 60);
+  std::mt19937_64 rng(5);
+  std::shuffle(mesh.triangles.begin(), mesh.triangles.end(), rng);
+  for (std::size_t t = 0; t < mesh.triangle_count(); t += 3) {
+    const std::uint32_t a = mesh.triangles[t][0];
+    for (int k = 1; k < 3; ++k) {
+      Vec3& corner = mesh.vertices[mesh.triangles[t][k]];
+      corner = mesh.vertices[a] + 0.999 * (corner - mesh.vertices[a]);
+    }
+  }
+  const double step = 0.6;
+  const auto sample = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                              static_cast<std::size_t>(threads));
+    return sample_mesh(mesh, step, SamplingScheme::paper_ii);
+  };
+  const SampleSet one = sample(1);
+  const SampleSet two = sample(2);
+  REQUIRE(one.vertex_sample == two.vertex_sample);
+  REQUIRE(one.owner == two.owner);
+  REQUIRE(one.lattice_i == two.lattice_i);
+  REQUIRE(one.lattice_j == two.lattice_j);
+  REQUIRE(std::count(one.tri_n.begin(), one.tri_n.end(), 0u) > 0);
+
+  std::vector<std::uint32_t> lowest(mesh.vertex_count(), kNoSample);
+  for (std::size_t t = mesh.triangle_count(); t-- > 0;) {
+    if (one.tri_n[t] == 0) continue;
+    for (const std::uint32_t v : mesh.triangles[t]) lowest[v] = static_cast<std::uint32_t>(t);
+  }
+  for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {
+    INFO("vertex " << v);
+    REQUIRE((one.vertex_sample[v] == kNoSample) == (lowest[v] == kNoSample));
+    if (lowest[v] == kNoSample) continue;
+    const std::uint32_t s = one.vertex_sample[v];
+    REQUIRE(one.owner[s] == lowest[v]);
+    REQUIRE(one.sample_at(lowest[v], one.lattice_i[s], one.lattice_j[s]) == s);
+  }
+  CHECK(predicted_sample_count(mesh, step, SamplingScheme::paper_ii) == one.sample_count());
 }
