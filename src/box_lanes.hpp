@@ -107,9 +107,4 @@ inline unsigned near_lanes(const BoxBlock& block, const LaneQuery& query,
 #endif
 }
 
-inline unsigned near_lanes(const BoxBlock& block, const float q[3], float limit,
-                           float squared[kBoxLanes]) {
-  return near_lanes(block, lane_query(q, limit), squared);
-}
-
 }  // namespace ncv

@@ -63,7 +63,8 @@ TEST_CASE("box lanes: the vector path equals the scalar path", "[search]") {
       const Case c = random_case(rng, scale);
       const float limit = ncv::box_filter_limit(scale * 1e-3 * (k % 7), scale);
       float vector_squared[kBoxLanes], scalar_squared[kBoxLanes];
-      const unsigned vector_lanes = ncv::near_lanes(c.block, c.qf, limit, vector_squared);
+      const unsigned vector_lanes =
+          ncv::near_lanes(c.block, ncv::lane_query(c.qf, limit), vector_squared);
       const unsigned scalar_lanes = ncv::near_lanes_scalar(c.block, c.qf, limit, scalar_squared);
       REQUIRE(vector_lanes == scalar_lanes);
       for (int lane = 0; lane < kBoxLanes; ++lane) {
@@ -87,7 +88,7 @@ TEST_CASE("box lanes: a rejected box is farther than the bound", "[search]") {
       const double bound = exact * (1 - 0x1p-18 * unit(rng));
       const float limit = ncv::box_filter_limit(bound, scale);
       float squared[kBoxLanes];
-      const unsigned near = ncv::near_lanes(c.block, c.qf, limit, squared);
+      const unsigned near = ncv::near_lanes(c.block, ncv::lane_query(c.qf, limit), squared);
       for (int lane = 0; lane < kBoxLanes; ++lane) {
         if (near & (1u << lane)) continue;
         ++rejected;
