@@ -18,21 +18,33 @@ namespace {
 
 constexpr std::size_t kTriangleBlock = 1 << 14;  // ordered_reduce's blocks
 
-// Lattice size a triangle gets under the scheme: scheme I lifts n < 2 to 2 (corners only),
-// scheme II leaves it unsampled (0).
-std::uint32_t scheme_lattice_size(double area, double step, SamplingScheme scheme) {
-  const std::uint32_t n = lattice_size(area, step);
-  if (n >= 2) return n;
-  return scheme == SamplingScheme::all ? 2u : 0u;
-}
-
-std::vector<std::uint32_t> lattice_sizes(const Mesh& mesh, double step, SamplingScheme scheme) {
+// Each triangle's lattice size under the scheme: scheme I lifts n < 2 to 2 (corners only),
+// scheme II leaves the triangle unsampled (0). The same pass, which computes each area
+// once, sums what the report says about the triangles (small, degenerate, area), in blocks
+// so that the area does not depend on the thread count.
+std::vector<std::uint32_t> lattice_sizes(const Mesh& mesh, double step, SamplingScheme scheme,
+                                         SamplingReport* counts = nullptr) {
   std::vector<std::uint32_t> sizes(mesh.triangle_count());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sizes.size(), 4096), [&](const auto& r) {
-    for (std::size_t t = r.begin(); t != r.end(); ++t) {
-      sizes[t] = scheme_lattice_size(triangle_area(mesh, t), step, scheme);
-    }
-  });
+  const SamplingReport total = ordered_reduce(
+      sizes.size(), kTriangleBlock, SamplingReport{},
+      [&](std::size_t begin, std::size_t end) {
+        SamplingReport part;
+        for (std::size_t t = begin; t < end; ++t) {
+          const double area = triangle_area(mesh, t);
+          const std::uint32_t n = lattice_size(area, step);
+          sizes[t] = n >= 2 ? n : scheme == SamplingScheme::all ? 2u : 0u;
+          if (n < 2) ++part.small_triangles;
+          if (area == 0) ++part.degenerate_triangles;
+          part.surface_area += area;
+        }
+        return part;
+      },
+      [](SamplingReport& sum, const SamplingReport& part) {
+        sum.small_triangles += part.small_triangles;
+        sum.degenerate_triangles += part.degenerate_triangles;
+        sum.surface_area += part.surface_area;
+      });
+  if (counts) *counts = total;
   return sizes;
 }
 
@@ -78,31 +90,6 @@ std::uint32_t assign_vertex_samples(SampleSet& set) {
     set.lattice_j.push_back(j);
   }
   return count;
-}
-
-// The report's counts and area, summed in blocks so that the area does not depend on the
-// thread count.
-SamplingReport sampling_report(const SampleSet& set) {
-  SamplingReport report = ordered_reduce(
-      set.tri_n.size(), kTriangleBlock, SamplingReport{},
-      [&](std::size_t begin, std::size_t end) {
-        SamplingReport part;
-        for (std::size_t t = begin; t < end; ++t) {
-          const double area = triangle_area(set.workpiece, t);
-          if (lattice_size(area, set.step) < 2) ++part.small_triangles;
-          if (area == 0) ++part.degenerate_triangles;
-          part.surface_area += area;
-        }
-        return part;
-      },
-      [](SamplingReport& total, const SamplingReport& part) {
-        total.small_triangles += part.small_triangles;
-        total.degenerate_triangles += part.degenerate_triangles;
-        total.surface_area += part.surface_area;
-      });
-  report.triangles = set.workpiece.triangle_count();
-  report.samples = set.sample_count();
-  return report;
 }
 
 bool is_corner(std::uint32_t i, std::uint32_t j, std::uint32_t n) {
@@ -184,7 +171,8 @@ SampleSet sample_mesh(Mesh workpiece, double step, SamplingScheme scheme, Sampli
   set.step = step;
   set.scheme = scheme;
   set.workpiece_hash = mesh_hash(set.workpiece);
-  set.tri_n = lattice_sizes(set.workpiece, step, scheme);
+  SamplingReport counts;
+  set.tri_n = lattice_sizes(set.workpiece, step, scheme, &counts);
 
   const std::uint32_t vertex_samples = assign_vertex_samples(set);
   set.tri_first.resize(set.tri_n.size());
@@ -207,7 +195,11 @@ SampleSet sample_mesh(Mesh workpiece, double step, SamplingScheme scheme, Sampli
     }
   });
 
-  if (report) *report = sampling_report(set);
+  if (report) {
+    *report = counts;
+    report->triangles = set.workpiece.triangle_count();
+    report->samples = set.sample_count();
+  }
   return set;
 }
 
