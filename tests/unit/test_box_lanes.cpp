@@ -1,10 +1,12 @@
 // The search's float box prefilter: the vector path equals the scalar one lane for lane,
 // and a lane is only ever rejected when the exact (long double) distance from the query to
 // its box exceeds the bound, at every coordinate scale where the filter is used. Also the
-// packing of references into blocks.
+// packing of references into blocks, and the outward rounding of their coordinates.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "box_lanes.hpp"
@@ -124,11 +126,46 @@ TEST_CASE("reference boxes: block r / 4, lane r % 4 holds reference r's box", "[
     }
     const std::uint32_t t = grid.cell_triangles[r];
     REQUIRE(block.triangle[lane] == t);
-    for (const ncv::Vec3& corner : nominal.corners(t)) {
-      for (int axis = 0; axis < 3; ++axis) {
+    const ncv::TriangleCorners& c = nominal.corners(t);
+    for (int axis = 0; axis < 3; ++axis) {
+      for (const ncv::Vec3& corner : c) {
         REQUIRE(block.lo[axis][lane] <= corner[axis]);
         REQUIRE(block.hi[axis][lane] >= corner[axis]);
       }
+      // The tightest float box: no float between the bound and the nearest corner.
+      REQUIRE(block.lo[axis][lane] ==
+              ncv::float_at_or_below(std::min({c[0][axis], c[1][axis], c[2][axis]})));
+      REQUIRE(block.hi[axis][lane] ==
+              ncv::float_at_or_above(std::max({c[0][axis], c[1][axis], c[2][axis]})));
     }
   }
+}
+
+TEST_CASE("float_at_or_below / above: the nearest float on that side", "[search]") {
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  const auto check = [](double x) {
+    const float below = ncv::float_at_or_below(x);
+    const float above = ncv::float_at_or_above(x);
+    INFO("x = " << x);
+    REQUIRE(static_cast<double>(below) <= x);
+    REQUIRE(static_cast<double>(std::nextafter(below, inf)) > x);
+    REQUIRE(static_cast<double>(above) >= x);
+    REQUIRE(static_cast<double>(std::nextafter(above, -inf)) < x);
+  };
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-160, 140);
+  for (int i = 0; i < 200000; ++i) check(std::ldexp(mantissa(random), exponent(random)));
+  for (const double x : {0.0, -0.0, 1.0, -1.0, 0.1, -0.1, 1e-50, -1e-50, 1e-40, -1e-40,
+                         3.4028234663852886e38, 3.5e38, -3.5e38, 1e100, -1e100}) {
+    check(x);
+  }
+  CHECK(ncv::float_at_or_below(1e-50) == 0.0f);
+  CHECK(ncv::float_at_or_above(1e-50) == std::numeric_limits<float>::denorm_min());
+  CHECK(ncv::float_at_or_below(-1e-50) == -std::numeric_limits<float>::denorm_min());
+  CHECK(ncv::float_at_or_below(1e100) == std::numeric_limits<float>::max());
+  CHECK(ncv::float_at_or_above(1e100) == inf);
+  CHECK(ncv::float_at_or_below(-1e100) == -inf);
+  CHECK(ncv::float_at_or_below(0.5) == 0.5f);
+  CHECK(ncv::float_at_or_above(0.5) == 0.5f);
 }
