@@ -75,8 +75,7 @@ void write_colorized(const DistanceSet& distances, const std::string& ply_path,
                                       distances.samples.workpiece_source + " against " +
                                       distances.nominal.source,
                                   "positive = excess material, negative = gouge"};
-  std::ostringstream ply;
-  write_error_ply(ply, mesh, map, comments);
+  const Buffer<char> ply = error_ply(mesh, map, comments);
   // Both outputs open before either is committed: a legend path that cannot be written
   // leaves no coloured mesh either.
   OutputFile out(ply_path, OutputKind::binary);
@@ -87,7 +86,7 @@ void write_colorized(const DistanceSet& distances, const std::string& ply_path,
     write_legend_svg(svg, map, "model units");
     legend->write(svg.str());
   }
-  out.write(ply.view());
+  out.write(ply.data(), ply.size());
   out.commit();
   if (legend) legend->commit();
   spdlog::info("wrote {} ({} vertices, {} faces, {})", out.display_name(), mesh.mesh.vertex_count(),

@@ -6,6 +6,8 @@
 #include <limits>
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "error.hpp"
 
@@ -13,31 +15,18 @@ namespace ncv {
 
 namespace {
 
-constexpr std::size_t kFlushBytes = 1 << 20;
+constexpr std::size_t kVertexBytes = 3 * 4 + 3 + 2 * 4;
+constexpr std::size_t kFaceBytes = 1 + 3 * 4;
 
-// Byte-wise little-endian output, independent of the host's byte order.
-class LittleEndianBuffer {
- public:
-  explicit LittleEndianBuffer(std::ostream& out) : out_(out) { bytes_.reserve(kFlushBytes + 64); }
+// Little-endian fields at a byte position, independent of the host's byte order.
+char* put_u32(char* at, std::uint32_t value) {
+  for (int shift = 0; shift < 32; shift += 8) *at++ = static_cast<char>(value >> shift);
+  return at;
+}
 
-  void put_u8(std::uint8_t value) { bytes_.push_back(static_cast<char>(value)); }
-  void put_u32(std::uint32_t value) {
-    for (int shift = 0; shift < 32; shift += 8) put_u8(static_cast<std::uint8_t>(value >> shift));
-  }
-  void put_float(double value) { put_u32(std::bit_cast<std::uint32_t>(static_cast<float>(value))); }
-
-  void flush_if_full() {
-    if (bytes_.size() >= kFlushBytes) flush();
-  }
-  void flush() {
-    out_.write(bytes_.data(), static_cast<std::streamsize>(bytes_.size()));
-    bytes_.clear();
-  }
-
- private:
-  std::ostream& out_;
-  std::string bytes_;
-};
+char* put_float(char* at, double value) {
+  return put_u32(at, std::bit_cast<std::uint32_t>(static_cast<float>(value)));
+}
 
 std::string single_line(std::string text) {
   std::replace_if(
@@ -45,45 +34,69 @@ std::string single_line(std::string text) {
   return text;
 }
 
-void write_header(std::ostream& out, const ErrorMesh& mesh, const ColorMap& map,
-                  std::span<const std::string> comments) {
-  out << "ply\nformat binary_little_endian 1.0\n";
-  for (const std::string& comment : comments) out << "comment " << single_line(comment) << '\n';
-  out << "comment " << single_line(map.description()) << '\n';
-  out << fmt::format("element vertex {}\n", mesh.mesh.vertex_count())
-      << "property float x\nproperty float y\nproperty float z\n"
-      << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
-      << "property float quality\nproperty float scalar_signed_distance\n"
-      << fmt::format("element face {}\n", mesh.mesh.triangle_count())
-      << "property list uchar int vertex_indices\nend_header\n";
+std::string header(const ErrorMesh& mesh, const ColorMap& map,
+                   std::span<const std::string> comments) {
+  std::string text = "ply\nformat binary_little_endian 1.0\n";
+  for (const std::string& comment : comments) text += "comment " + single_line(comment) + '\n';
+  text += "comment " + single_line(map.description()) + '\n';
+  text += fmt::format("element vertex {}\n", mesh.mesh.vertex_count());
+  text +=
+      "property float x\nproperty float y\nproperty float z\n"
+      "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+      "property float quality\nproperty float scalar_signed_distance\n";
+  text += fmt::format("element face {}\n", mesh.mesh.triangle_count());
+  text += "property list uchar int vertex_indices\nend_header\n";
+  return text;
+}
+
+void put_vertex(char* at, Vec3 p, const Rgb& rgb, double value) {
+  at = put_float(at, p.x);
+  at = put_float(at, p.y);
+  at = put_float(at, p.z);
+  for (const std::uint8_t channel : rgb) *at++ = static_cast<char>(channel);
+  at = put_float(at, value);
+  put_float(at, value);
+}
+
+void put_face(char* at, const Triangle& triangle) {
+  *at++ = 3;
+  for (const std::uint32_t index : triangle) at = put_u32(at, index);
 }
 
 }  // namespace
 
+Buffer<char> error_ply(const ErrorMesh& mesh, const ColorMap& map,
+                       std::span<const std::string> comments) {
+  const std::size_t vertices = mesh.mesh.vertex_count();
+  const std::size_t faces = mesh.mesh.triangle_count();
+  if (vertices > std::uint64_t{std::numeric_limits<std::int32_t>::max()}) {
+    throw UsageError(fmt::format("{} vertices are too many for PLY int vertex indices", vertices));
+  }
+  const std::string head = header(mesh, map, comments);
+  Buffer<char> bytes(head.size() + vertices * kVertexBytes + faces * kFaceBytes);
+  std::copy(head.begin(), head.end(), bytes.begin());
+  char* const vertex_records = bytes.data() + head.size();
+  char* const face_records = vertex_records + vertices * kVertexBytes;
+  // Fixed-size records: every range fills its own bytes.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 1 << 14),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t v = range.begin(); v != range.end(); ++v) {
+                        put_vertex(vertex_records + v * kVertexBytes, mesh.mesh.vertices[v],
+                                   map.rgb(mesh.values[v]), mesh.values[v]);
+                      }
+                    });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces, 1 << 15),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t f = range.begin(); f != range.end(); ++f)
+                        put_face(face_records + f * kFaceBytes, mesh.mesh.triangles[f]);
+                    });
+  return bytes;
+}
+
 void write_error_ply(std::ostream& out, const ErrorMesh& mesh, const ColorMap& map,
                      std::span<const std::string> comments) {
-  if (mesh.mesh.vertex_count() > std::uint64_t{std::numeric_limits<std::int32_t>::max()}) {
-    throw UsageError(fmt::format("{} vertices are too many for PLY int vertex indices",
-                                 mesh.mesh.vertex_count()));
-  }
-  write_header(out, mesh, map, comments);
-  LittleEndianBuffer buffer(out);
-  for (std::size_t v = 0; v < mesh.mesh.vertex_count(); ++v) {
-    const Vec3 p = mesh.mesh.vertices[v];
-    buffer.put_float(p.x);
-    buffer.put_float(p.y);
-    buffer.put_float(p.z);
-    for (const std::uint8_t channel : map.rgb(mesh.values[v])) buffer.put_u8(channel);
-    buffer.put_float(mesh.values[v]);
-    buffer.put_float(mesh.values[v]);
-    buffer.flush_if_full();
-  }
-  for (const Triangle& triangle : mesh.mesh.triangles) {
-    buffer.put_u8(3);
-    for (const std::uint32_t index : triangle) buffer.put_u32(index);
-    buffer.flush_if_full();
-  }
-  buffer.flush();
+  const Buffer<char> bytes = error_ply(mesh, map, comments);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
 }
 
 }  // namespace ncv

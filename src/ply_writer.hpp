@@ -9,13 +9,18 @@
 #include <span>
 #include <string>
 
+#include "buffer.hpp"
 #include "color_map.hpp"
 #include "error_mesh.hpp"
 
 namespace ncv {
 
-// comments become header comment lines (line breaks replaced by blanks), followed by one
-// describing the colour map.
+// The whole file; its fixed-size vertex and face records are filled in parallel. comments
+// become header comment lines (line breaks replaced by blanks), followed by one describing
+// the colour map.
+Buffer<char> error_ply(const ErrorMesh& mesh, const ColorMap& map,
+                       std::span<const std::string> comments = {});
+// The same bytes to a stream.
 void write_error_ply(std::ostream& out, const ErrorMesh& mesh, const ColorMap& map,
                      std::span<const std::string> comments = {});
 

@@ -204,6 +204,36 @@ TEST_CASE("the lattice PLY shows every sample as a vertex", "[ply]") {
   CHECK(read.n_faces() == sub_triangles);
 }
 
+TEST_CASE("a PLY of many records is filled in parallel, every record in its place", "[ply]") {
+  // Over 16384 vertices and 32768 faces: several ranges of the parallel fill each.
+  const SampleSet samples =
+      ncv::sample_mesh(ncv::test::flat_grid(2, 1.0), 0.004, ncv::SamplingScheme::all);
+  const auto d = ncv::test::distances_of(samples, [](Vec3 p) { return p.x * p.y - 0.25; });
+  const ErrorMesh mesh = ncv::lattice_error_mesh(samples, d);
+  REQUIRE(mesh.mesh.vertex_count() > 3 * 16384);
+  REQUIRE(mesh.mesh.triangle_count() > 3 * 32768);
+  const std::string bytes = to_ply(mesh, kMap);
+  const PlyFile file = split(bytes);
+  REQUIRE(file.body.size() ==
+          mesh.mesh.vertex_count() * kVertexBytes + mesh.mesh.triangle_count() * 13);
+  for (std::size_t v = 0; v < mesh.mesh.vertex_count(); ++v) {
+    const std::size_t at = v * kVertexBytes;
+    REQUIRE(float_at(file.body, at) == static_cast<float>(mesh.mesh.vertices[v].x));
+    REQUIRE(float_at(file.body, at + 8) == static_cast<float>(mesh.mesh.vertices[v].z));
+    REQUIRE(static_cast<std::uint8_t>(file.body[at + 13]) == kMap.rgb(mesh.values[v])[1]);
+    REQUIRE(float_at(file.body, at + 19) == static_cast<float>(mesh.values[v]));
+  }
+  const std::size_t faces = mesh.mesh.vertex_count() * kVertexBytes;
+  for (std::size_t f = 0; f < mesh.mesh.triangle_count(); ++f) {
+    REQUIRE(file.body[faces + f * 13] == 3);
+    REQUIRE(int_at(file.body, faces + f * 13 + 9) ==
+            static_cast<std::int32_t>(mesh.mesh.triangles[f][2]));
+  }
+  const OpenMeshTriMesh read = read_back(bytes);
+  CHECK(read.n_vertices() == mesh.mesh.vertex_count());
+  CHECK(read.n_faces() == mesh.mesh.triangle_count());
+}
+
 TEST_CASE("vertices without a sample are grey with NaN errors", "[ply]") {
   // One large and one tiny triangle: under scheme II the tiny one is not sampled and its
   // far vertex has no sample.
