@@ -167,7 +167,7 @@ ErrorStatistics compute_error_statistics(const SampleSet& samples, std::span<con
   count_triangles(samples, stats);
   find_extremes(samples, d, stats);
 
-  const std::vector<LinearPatch> patches = lattice_patches(samples, d);
+  const Buffer<LinearPatch> patches = lattice_patches(samples, d);
   compute_moments(patches, stats);
   if (tolerance) stats.tolerance = clip_to_tolerance(patches, *tolerance, stats);
   stats.histogram = area_histogram(

@@ -10,13 +10,13 @@ double lattice_triangle_area(const SampleSet& samples, std::size_t t) {
   return triangle_area(samples.workpiece, t) / (steps * steps);
 }
 
-std::vector<LinearPatch> lattice_patches(const SampleSet& samples, std::span<const double> d) {
+Buffer<LinearPatch> lattice_patches(const SampleSet& samples, std::span<const double> d) {
   const std::size_t triangles = samples.tri_n.size();
   std::vector<std::uint64_t> first(triangles + 1, 0);
   for (std::size_t t = 0; t < triangles; ++t) {
     first[t + 1] = first[t] + lattice_triangle_count(samples.tri_n[t]);
   }
-  std::vector<LinearPatch> patches(first[triangles]);
+  Buffer<LinearPatch> patches(first[triangles]);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles, 1024), [&](const auto& range) {
     for (std::size_t t = range.begin(); t != range.end(); ++t) {
       if (samples.tri_n[t] < 2) continue;

@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "buffer.hpp"
 #include "linear_patch.hpp"
 #include "sampling.hpp"
 
@@ -43,7 +44,8 @@ void for_each_lattice_triangle(const SampleSet& samples, std::size_t t, Visit&& 
 }
 
 // Every sub-triangle of every sampled triangle as a linear patch of the distances d (one
-// per sample), triangle by triangle in mesh order.
-std::vector<LinearPatch> lattice_patches(const SampleSet& samples, std::span<const double> d);
+// per sample), triangle by triangle in mesh order. Filled in parallel, each patch written
+// once (no serial zero-fill first).
+Buffer<LinearPatch> lattice_patches(const SampleSet& samples, std::span<const double> d);
 
 }  // namespace ncv
