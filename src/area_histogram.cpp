@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -17,17 +19,40 @@ constexpr std::size_t kPatchBlock = 1 << 16;
 // Per-block accumulator: the bins, then below_range, above_range and the total area.
 using BinSums = std::vector<double>;
 
-// The bin holding value v of [edges.front(), edges.back()].
-std::size_t bin_of(const std::vector<double>& edges, double v) {
-  const auto first_not_below = std::lower_bound(edges.begin(), edges.end(), v);
-  const std::size_t j = static_cast<std::size_t>(first_not_below - edges.begin());
-  return j == 0 ? 0 : std::min(j - 1, edges.size() - 2);
-}
+// The bins' edges, and the bin holding a value: bin k holds (edge k, edge k + 1], bin 0
+// also its lower edge. The quotient by the bin width guesses the bin; the edges (computed by
+// lerp, not exactly lo + k * width) then correct the guess by a step at most, which is
+// what a binary search over them would find.
+class BinEdges {
+ public:
+  explicit BinEdges(std::vector<double> edges)
+      : edges_(std::move(edges)),
+        per_unit_(static_cast<double>(edges_.size() - 1) / (edges_.back() - edges_.front())) {}
+
+  double operator[](std::size_t k) const { return edges_[k]; }
+  double front() const { return edges_.front(); }
+  double back() const { return edges_.back(); }
+  std::size_t bins() const { return edges_.size() - 1; }
+
+  std::size_t bin_of(double v) const {
+    const double guess = (v - edges_.front()) * per_unit_;
+    const double top = static_cast<double>(bins() - 1);
+    // The negated test also sends a NaN quotient (a single-valued range) to bin 0.
+    std::size_t k = !(guess > 0) ? 0 : static_cast<std::size_t>(std::min(guess, top));
+    while (k > 0 && v <= edges_[k]) --k;
+    while (k + 1 < bins() && v > edges_[k + 1]) ++k;
+    return k;
+  }
+
+ private:
+  std::vector<double> edges_;
+  double per_unit_;
+};
 
 // Walks the bins the patch spans, giving each the growth of the patch's distribution
 // function across it.
-void add_patch(BinSums& sums, const std::vector<double>& edges, const LinearPatch& p) {
-  const std::size_t bins = edges.size() - 1;
+void add_patch(BinSums& sums, const BinEdges& edges, const LinearPatch& p) {
+  const std::size_t bins = edges.bins();
   double& below = sums[bins];
   double& above = sums[bins + 1];
   sums[bins + 2] += p.area;
@@ -39,8 +64,8 @@ void add_patch(BinSums& sums, const std::vector<double>& edges, const LinearPatc
     above += p.area;
     return;
   }
-  const std::size_t first = bin_of(edges, std::max(p.lo, edges.front()));
-  const std::size_t last = bin_of(edges, std::min(p.hi, edges.back()));
+  const std::size_t first = edges.bin_of(std::max(p.lo, edges.front()));
+  const std::size_t last = edges.bin_of(std::min(p.hi, edges.back()));
   if (first == last && p.lo >= edges.front() && p.hi <= edges.back()) {
     sums[first] += p.area;
     return;
@@ -74,8 +99,9 @@ Histogram area_histogram(std::span<const LinearPatch> patches, ValueRange range,
   histogram.range = range;
   histogram.area.resize(range.lo == range.hi ? 1 : bins);
   const std::size_t count = histogram.bin_count();
-  std::vector<double> edges(count + 1);
-  for (std::size_t k = 0; k <= count; ++k) edges[k] = histogram.edge(k);
+  std::vector<double> edge_values(count + 1);
+  for (std::size_t k = 0; k <= count; ++k) edge_values[k] = histogram.edge(k);
+  const BinEdges edges(std::move(edge_values));
 
   BinSums sums = ordered_reduce(
       patches.size(), kPatchBlock, BinSums(count + 3, 0.0),

@@ -1,11 +1,13 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
 
 #include <tbb/global_control.h>
 
+#include "area_histogram.hpp"
 #include "area_quantiles.hpp"
 #include "error.hpp"
 #include "error_statistics.hpp"
@@ -288,6 +290,42 @@ TEST_CASE("the measures match a plain sub-triangle by sub-triangle recomputation
   CHECK(histogram_area == Approx(ref.area).epsilon(1e-12));
 }
 
+TEST_CASE("a histogram bin holds the values above its lower edge up to its upper one", "[stats]") {
+  // Atoms (constant patches) of distinct areas on every edge, between edges and at random:
+  // each must land in the bin a binary search over the edges gives.
+  const ncv::ValueRange range{-0.3, 0.7787481844190582};
+  const std::uint32_t bins = 37;
+  ncv::Histogram edges_of;
+  edges_of.range = range;
+  edges_of.area.resize(bins);
+  std::vector<double> edges(bins + 1);
+  for (std::size_t k = 0; k <= bins; ++k) edges[k] = edges_of.edge(k);
+  std::vector<double> values = edges;
+  for (std::size_t k = 0; k < bins; ++k) {
+    values.push_back(std::nextafter(edges[k], INFINITY));
+    values.push_back(std::nextafter(edges[k + 1], -INFINITY));
+  }
+  std::mt19937_64 random(17);
+  std::uniform_real_distribution<double> anywhere(range.lo, range.hi);
+  for (int i = 0; i < 2000; ++i) values.push_back(anywhere(random));
+  std::vector<double> expected(bins, 0.0);
+  std::vector<ncv::LinearPatch> patches;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const double area = 1.0 + static_cast<double>(i) / 1024;  // exact sums in any order
+    patches.push_back(ncv::make_linear_patch(area, values[i], values[i], values[i]));
+    const auto first_not_below = std::lower_bound(edges.begin(), edges.end(), values[i]);
+    const auto j = static_cast<std::size_t>(first_not_below - edges.begin());
+    expected[j == 0 ? 0 : std::min<std::size_t>(j - 1, bins - 1)] += area;
+  }
+  const ncv::Histogram h = ncv::area_histogram(patches, range, bins);
+  for (std::size_t k = 0; k < bins; ++k) {
+    INFO("bin " << k);
+    CHECK(h.area[k] == expected[k]);
+  }
+  CHECK(h.below_range == 0);
+  CHECK(h.above_range == 0);
+}
+
 TEST_CASE("percentiles invert the exact area distribution", "[stats]") {
   const SampleSet samples = ncv::sample_mesh(uneven_surface(), 0.05, ncv::SamplingScheme::all);
   std::mt19937_64 random(11);
@@ -295,7 +333,7 @@ TEST_CASE("percentiles invert the exact area distribution", "[stats]") {
   std::vector<double> d(samples.sample_count());
   for (double& v : d) v = noise(random);
   const ErrorStatistics stats = compute_error_statistics(samples, d, std::nullopt);
-  const std::vector<ncv::LinearPatch> patches = ncv::lattice_patches(samples, d);
+  const ncv::Buffer<ncv::LinearPatch> patches = ncv::lattice_patches(samples, d);
   for (const ncv::Percentile& p : stats.percentiles) {
     INFO("percentile " << p.percent);
     double at_most = 0, below = 0;
@@ -395,6 +433,29 @@ TEST_CASE("statistics do not depend on the thread count", "[stats]") {
   CHECK(one.histogram.area == many.histogram.area);
   for (std::size_t k = 0; k < one.percentiles.size(); ++k) {
     CHECK(one.percentiles[k].value == many.percentiles[k].value);
+  }
+}
+
+TEST_CASE("percentiles of a field of many patch blocks invert the exact distribution", "[stats]") {
+  // Several blocks of 65536 patches: the first brackets are gathered in parallel.
+  const SampleSet samples =
+      ncv::sample_mesh(ncv::test::flat_grid(40, 1.0), 0.0025, ncv::SamplingScheme::all);
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> noise(-1e-3, 1e-3);
+  std::vector<double> d = distances_of(samples, [](Vec3 p) { return std::sin(9 * p.x) * p.y; });
+  for (double& v : d) v += noise(random);
+  const ncv::Buffer<ncv::LinearPatch> patches = ncv::lattice_patches(samples, d);
+  REQUIRE(patches.size() > 3 * 65536);
+  const ErrorStatistics stats = compute_error_statistics(samples, d, std::nullopt);
+  for (const ncv::Percentile& p : stats.percentiles) {
+    INFO("percentile " << p.percent);
+    double at_most = 0, below = 0;
+    for (const ncv::LinearPatch& patch : patches) {
+      at_most += ncv::area_at_most(patch, p.value);
+      below += ncv::area_below(patch, p.value);
+    }
+    CHECK(at_most / stats.sampled_area == Approx(p.percent / 100).epsilon(1e-9));
+    CHECK(below / stats.sampled_area == Approx(p.percent / 100).epsilon(1e-9));
   }
 }
 
