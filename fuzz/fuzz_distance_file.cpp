@@ -14,7 +14,7 @@
 
 namespace {
 
-void read_distances(std::vector<char> bytes) {
+void read_distances(ncv::Buffer<char> bytes) {
   const ncv::Container c = ncv::Container::parse(
       std::move(bytes), "fuzz.dist", ncv::FileKind::distances, ncv::kDistancesFormatVersion);
   const ncv::DistanceSet set = ncv::load_distance_set(c);
@@ -31,7 +31,7 @@ void read_distances(std::vector<char> bytes) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   ncv::fuzz::quiet_and_serial();
-  ncv::fuzz::accepts([&] { read_distances(std::vector<char>(data, data + size)); });
+  ncv::fuzz::accepts([&] { read_distances(ncv::Buffer<char>(data, data + size)); });
   ncv::fuzz::accepts([&] { read_distances(ncv::fuzz::sealed_container(data, size)); });
   return 0;
 }

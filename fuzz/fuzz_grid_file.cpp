@@ -30,7 +30,7 @@ std::vector<ncv::Vec3> query_points(const ncv::Mesh& mesh) {
   return points;
 }
 
-void read_grid(std::vector<char> bytes) {
+void read_grid(ncv::Buffer<char> bytes) {
   const ncv::Container c = ncv::Container::parse(std::move(bytes), "fuzz.grid", ncv::FileKind::grid,
                                                  ncv::kGridFormatVersion);
   const ncv::NominalGrid g = ncv::load_nominal_grid(c);
@@ -47,7 +47,7 @@ void read_grid(std::vector<char> bytes) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   ncv::fuzz::quiet_and_serial();
-  ncv::fuzz::accepts([&] { read_grid(std::vector<char>(data, data + size)); });
+  ncv::fuzz::accepts([&] { read_grid(ncv::Buffer<char>(data, data + size)); });
   ncv::fuzz::accepts([&] { read_grid(ncv::fuzz::sealed_container(data, size)); });
   return 0;
 }

@@ -7,7 +7,7 @@
 
 namespace {
 
-void read_samples(std::vector<char> bytes) {
+void read_samples(ncv::Buffer<char> bytes) {
   const ncv::Container c = ncv::Container::parse(
       std::move(bytes), "fuzz.samples", ncv::FileKind::samples, ncv::kSamplesFormatVersion);
   const ncv::SampleSet set = ncv::load_sample_set(c);
@@ -19,7 +19,7 @@ void read_samples(std::vector<char> bytes) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   ncv::fuzz::quiet_and_serial();
-  ncv::fuzz::accepts([&] { read_samples(std::vector<char>(data, data + size)); });
+  ncv::fuzz::accepts([&] { read_samples(ncv::Buffer<char>(data, data + size)); });
   ncv::fuzz::accepts([&] { read_samples(ncv::fuzz::sealed_container(data, size)); });
   return 0;
 }

@@ -15,6 +15,7 @@
 #include <memory>
 #include <vector>
 
+#include "buffer.hpp"
 #include "error.hpp"
 
 namespace ncv::fuzz {
@@ -43,8 +44,8 @@ bool accepts(Read&& read) {
 // right. Random mutations almost never keep the XXH3 trailer valid, so without this the
 // fuzzer would never get past the hash check into the metadata and section readers (the
 // targets also try the bytes unchanged, which exercises the header checks themselves).
-inline std::vector<char> sealed_container(const std::uint8_t* data, std::size_t size) {
-  std::vector<char> bytes(data, data + size);
+inline Buffer<char> sealed_container(const std::uint8_t* data, std::size_t size) {
+  Buffer<char> bytes(data, data + size);
   if (bytes.size() < 72) return bytes;
   const std::uint64_t file_bytes = bytes.size();
   std::memcpy(bytes.data() + 24, &file_bytes, sizeof file_bytes);

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "buffer.hpp"
 #include "error.hpp"
 #include "output_file.hpp"
 
@@ -86,7 +87,7 @@ class ContainerWriter {
 // A parsed, verified container: magic, kind, version, sizes and content hash all checked.
 class Container {
  public:
-  static Container parse(std::vector<char> bytes, const std::string& source, FileKind kind,
+  static Container parse(Buffer<char> bytes, const std::string& source, FileKind kind,
                          std::uint32_t version);
   static Container read(const std::string& path, FileKind kind, std::uint32_t version);
   // Reads any kind, in its current version (for inspect).
@@ -134,7 +135,7 @@ class Container {
   std::string source_;
   FileKind kind_{};
   std::uint32_t version_ = 0;
-  std::vector<char> bytes_;
+  Buffer<char> bytes_;
   nlohmann::json meta_;
   std::vector<SectionEntry> sections_;
 };

@@ -33,7 +33,7 @@ std::string input_name(const std::string& path) {
   return path == "-" ? "standard input" : path;
 }
 
-std::vector<char> read_input_bytes(const std::string& path) {
+Buffer<char> read_input_bytes(const std::string& path) {
   const std::string name = input_name(path);
   const bool from_stdin = path == "-";
   FileDescriptor fd(from_stdin ? STDIN_FILENO : ::open(path.c_str(), O_RDONLY | O_CLOEXEC),
@@ -47,8 +47,7 @@ std::vector<char> read_input_bytes(const std::string& path) {
   // reaching the end needs no reallocation (each one copies everything read so far).
   // Streams grow as data arrives and give back the excess at the end.
   const bool sized = S_ISREG(info.st_mode);
-  std::vector<char> bytes(sized ? static_cast<std::size_t>(info.st_size) + 1
-                                : std::size_t{1} << 16);
+  Buffer<char> bytes(sized ? static_cast<std::size_t>(info.st_size) + 1 : std::size_t{1} << 16);
   std::size_t used = 0;
   for (;;) {
     if (used == bytes.size()) bytes.resize(2 * bytes.size());

@@ -148,7 +148,7 @@ Mesh parse_mesh(std::span<const char> bytes, const std::string& source, MeshRead
 }
 
 Mesh read_mesh(const std::string& path, MeshReadReport* report) {
-  const std::vector<char> bytes = read_input_bytes(path);
+  const Buffer<char> bytes = read_input_bytes(path);
   return parse_mesh(bytes, input_name(path), report);
 }
 

@@ -21,9 +21,9 @@ namespace {
 // A container of `kind` whose metadata is `meta_text` and whose sections are empty (at
 // offset 1024, where the zero padding after the metadata ends): the header, the JSON, the
 // padding and the XXH3 trailer, sized and hashed correctly.
-std::vector<char> sealed_container(const char tag[4], const std::string& meta_text) {
+ncv::Buffer<char> sealed_container(const char tag[4], const std::string& meta_text) {
   REQUIRE(64 + meta_text.size() <= 1024);
-  std::vector<char> bytes(1024 + 8, 0);
+  ncv::Buffer<char> bytes(1024 + 8, 0);
   const std::uint32_t version = 1;
   const std::uint64_t meta_bytes = meta_text.size();
   const std::uint64_t file_bytes = bytes.size();
@@ -81,12 +81,12 @@ TEST_CASE("a mesh hash of the wrong JSON type is bad input", "[intermediate-file
   // It used to escape as nlohmann::json::type_error instead of an InputError.
   for (const std::string hash : {"5", "null", "[1]"}) {
     INFO(hash);
-    const std::vector<char> samples =
+    const ncv::Buffer<char> samples =
         sealed_container("SMPL", meta_with_hash("workpiece", "workpiece", hash));
     CHECK_THROWS_MATCHES(load_sample_set(Container::parse(samples, "x.samples", FileKind::samples,
                                                           kSamplesFormatVersion)),
                          InputError, Catch::Message("x.samples: workpiece hash is malformed"));
-    const std::vector<char> grid =
+    const ncv::Buffer<char> grid =
         sealed_container("GRID", meta_with_hash("nominal", "nominal", hash));
     CHECK_THROWS_MATCHES(
         load_nominal_grid(Container::parse(grid, "x.grid", FileKind::grid, kGridFormatVersion)),

@@ -38,7 +38,8 @@ fs::path write_example(const SampleSet& set, const std::string& name) {
 }
 
 std::vector<char> bytes_of(const fs::path& path) {
-  return read_input_bytes(path.string());
+  const ncv::Buffer<char> bytes = read_input_bytes(path.string());
+  return {bytes.begin(), bytes.end()};
 }
 
 void write_bytes(const fs::path& path, const std::vector<char>& bytes) {
