@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <span>
 #include <vector>
 
 #include <tbb/global_control.h>
@@ -125,6 +126,22 @@ ncv::Mesh uneven_surface() {
     v.z = 0.3 * std::sin(2 * v.x) * std::cos(3 * v.y);
   }
   return mesh;
+}
+
+// Each reported percentile p has the fraction p / 100 of the area at or below it (and below
+// it: the field has no atoms), summed patch by patch with the closed forms.
+void check_percentiles_invert(const ErrorStatistics& stats,
+                              std::span<const ncv::LinearPatch> patches) {
+  for (const ncv::Percentile& p : stats.percentiles) {
+    INFO("percentile " << p.percent);
+    double at_most = 0, below = 0;
+    for (const ncv::LinearPatch& patch : patches) {
+      at_most += ncv::area_at_most(patch, p.value);
+      below += ncv::area_below(patch, p.value);
+    }
+    CHECK(at_most / stats.sampled_area == Approx(p.percent / 100).epsilon(1e-9));
+    CHECK(below / stats.sampled_area == Approx(p.percent / 100).epsilon(1e-9));
+  }
 }
 
 }  // namespace
@@ -334,16 +351,7 @@ TEST_CASE("percentiles invert the exact area distribution", "[stats]") {
   for (double& v : d) v = noise(random);
   const ErrorStatistics stats = compute_error_statistics(samples, d, std::nullopt);
   const ncv::Buffer<ncv::LinearPatch> patches = ncv::lattice_patches(samples, d);
-  for (const ncv::Percentile& p : stats.percentiles) {
-    INFO("percentile " << p.percent);
-    double at_most = 0, below = 0;
-    for (const ncv::LinearPatch& patch : patches) {
-      at_most += ncv::area_at_most(patch, p.value);
-      below += ncv::area_below(patch, p.value);
-    }
-    CHECK(at_most / stats.sampled_area == Approx(p.percent / 100).epsilon(1e-9));
-    CHECK(below / stats.sampled_area == Approx(p.percent / 100).epsilon(1e-9));
-  }
+  check_percentiles_invert(stats, patches);
 }
 
 TEST_CASE("quantiles of atoms and ramps", "[stats]") {
@@ -437,7 +445,8 @@ TEST_CASE("statistics do not depend on the thread count", "[stats]") {
 }
 
 TEST_CASE("percentiles of a field of many patch blocks invert the exact distribution", "[stats]") {
-  // Several blocks of 65536 patches: the first brackets are gathered in parallel.
+  // Several blocks of 65536 patches: the distribution at the split points is reduced over
+  // blocks in parallel.
   const SampleSet samples =
       ncv::sample_mesh(ncv::test::flat_grid(40, 1.0), 0.0025, ncv::SamplingScheme::all);
   std::mt19937_64 random(5);
@@ -447,16 +456,7 @@ TEST_CASE("percentiles of a field of many patch blocks invert the exact distribu
   const ncv::Buffer<ncv::LinearPatch> patches = ncv::lattice_patches(samples, d);
   REQUIRE(patches.size() > 3 * 65536);
   const ErrorStatistics stats = compute_error_statistics(samples, d, std::nullopt);
-  for (const ncv::Percentile& p : stats.percentiles) {
-    INFO("percentile " << p.percent);
-    double at_most = 0, below = 0;
-    for (const ncv::LinearPatch& patch : patches) {
-      at_most += ncv::area_at_most(patch, p.value);
-      below += ncv::area_below(patch, p.value);
-    }
-    CHECK(at_most / stats.sampled_area == Approx(p.percent / 100).epsilon(1e-9));
-    CHECK(below / stats.sampled_area == Approx(p.percent / 100).epsilon(1e-9));
-  }
+  check_percentiles_invert(stats, patches);
 }
 
 TEST_CASE("distances that do not fit the samples are input errors", "[stats]") {
