@@ -27,11 +27,12 @@ SampledWorkpiece sample_workpiece(Mesh mesh, const std::string& path,
   const SamplingScheme scheme = parse_scheme_option(options.scheme);
   const double step = SamplingStep::parse(options.step).resolve(bounding_box(mesh).diagonal());
   if (!(step > 0)) throw InputError(input_name(path), "the mesh has no extent");
-  const std::uint64_t predicted = predicted_sample_count(mesh, step, scheme);
+  SamplingPlan plan = plan_sampling(mesh, step, scheme);
+  const std::uint64_t predicted = predicted_sample_count(mesh, plan);
   check_memory_budget(fmt::format("sampling at step {} ({} samples)", step, predicted),
                       static_cast<double>(predicted) * kBytesPerSampleDownstream, options.force);
   SampledWorkpiece sampled;
-  sampled.samples = sample_mesh(std::move(mesh), step, scheme, &sampled.report);
+  sampled.samples = sample_mesh(std::move(mesh), std::move(plan), &sampled.report);
   sampled.samples.step_spec = options.step;
   sampled.samples.workpiece_source = input_name(path);
   sampled.seconds = clock.seconds();

@@ -6,6 +6,7 @@
 // topology, orientation and grid (as `grid-build`), and the signed distances of the
 // samples, where the grid search must agree bit for bit with brute force.
 #include <cmath>
+#include <utility>
 
 #include "fuzz_support.hpp"
 #include "grid_file.hpp"
@@ -35,8 +36,9 @@ void verify(const ncv::Mesh& workpiece) {
   // without extent, then refuses sample counts beyond its memory budget.
   const double step = 0.05 * ncv::bounding_box(workpiece).diagonal();
   if (!(step > 0) || !std::isfinite(step)) return;
-  if (ncv::predicted_sample_count(workpiece, step, ncv::SamplingScheme::all) > kMaxSamples) return;
-  const ncv::SampleSet samples = ncv::sample_mesh(workpiece, step, ncv::SamplingScheme::all);
+  ncv::SamplingPlan plan = ncv::plan_sampling(workpiece, step, ncv::SamplingScheme::all);
+  if (ncv::predicted_sample_count(workpiece, plan) > kMaxSamples) return;
+  const ncv::SampleSet samples = ncv::sample_mesh(workpiece, std::move(plan));
 
   const ncv::NominalGrid g = ncv::build_nominal_grid(workpiece, "fuzz", {}, nullptr);
   const ncv::SignMethod sign = g.nominal->automatic_sign_method();

@@ -18,36 +18,6 @@ namespace {
 
 constexpr std::size_t kTriangleBlock = 1 << 14;  // ordered_reduce's blocks
 
-// Each triangle's lattice size under the scheme: scheme I lifts n < 2 to 2 (corners only),
-// scheme II leaves the triangle unsampled (0). The same pass, which computes each area
-// once, sums what the report says about the triangles (small, degenerate, area), in blocks
-// so that the area does not depend on the thread count.
-std::vector<std::uint32_t> lattice_sizes(const Mesh& mesh, double step, SamplingScheme scheme,
-                                         SamplingReport* counts = nullptr) {
-  std::vector<std::uint32_t> sizes(mesh.triangle_count());
-  const SamplingReport total = ordered_reduce(
-      sizes.size(), kTriangleBlock, SamplingReport{},
-      [&](std::size_t begin, std::size_t end) {
-        SamplingReport part;
-        for (std::size_t t = begin; t < end; ++t) {
-          const double area = triangle_area(mesh, t);
-          const std::uint32_t n = lattice_size(area, step);
-          sizes[t] = n >= 2 ? n : scheme == SamplingScheme::all ? 2u : 0u;
-          if (n < 2) ++part.small_triangles;
-          if (area == 0) ++part.degenerate_triangles;
-          part.surface_area += area;
-        }
-        return part;
-      },
-      [](SamplingReport& sum, const SamplingReport& part) {
-        sum.small_triangles += part.small_triangles;
-        sum.degenerate_triangles += part.degenerate_triangles;
-        sum.surface_area += part.surface_area;
-      });
-  if (counts) *counts = total;
-  return sizes;
-}
-
 // Lattice coordinates of corner k of a size-n lattice: A = (0,0), B = (n-1,0), C = (0,n-1).
 std::pair<std::uint32_t, std::uint32_t> corner_lattice_coordinates(int k, std::uint32_t n) {
   if (k == 1) return {n - 1, 0};
@@ -138,8 +108,38 @@ std::uint64_t SampleSet::sample_at(std::size_t t, std::uint32_t i, std::uint32_t
   return tri_first[t] + rank - (i == 0 ? 1 : 2);
 }
 
-std::uint64_t predicted_sample_count(const Mesh& mesh, double step, SamplingScheme scheme) {
-  const std::vector<std::uint32_t> sizes = lattice_sizes(mesh, step, scheme);
+// One pass computes each triangle's area once for both the sizes and the report's counts,
+// in blocks so that the area sum does not depend on the thread count.
+SamplingPlan plan_sampling(const Mesh& mesh, double step, SamplingScheme scheme) {
+  SamplingPlan plan;
+  plan.step = step;
+  plan.scheme = scheme;
+  plan.lattice_sizes.resize(mesh.triangle_count());
+  std::vector<std::uint32_t>& sizes = plan.lattice_sizes;
+  plan.counts = ordered_reduce(
+      sizes.size(), kTriangleBlock, SamplingReport{},
+      [&](std::size_t begin, std::size_t end) {
+        SamplingReport part;
+        for (std::size_t t = begin; t < end; ++t) {
+          const double area = triangle_area(mesh, t);
+          const std::uint32_t n = lattice_size(area, step);
+          sizes[t] = n >= 2 ? n : scheme == SamplingScheme::all ? 2u : 0u;
+          if (n < 2) ++part.small_triangles;
+          if (area == 0) ++part.degenerate_triangles;
+          part.surface_area += area;
+        }
+        return part;
+      },
+      [](SamplingReport& sum, const SamplingReport& part) {
+        sum.small_triangles += part.small_triangles;
+        sum.degenerate_triangles += part.degenerate_triangles;
+        sum.surface_area += part.surface_area;
+      });
+  return plan;
+}
+
+std::uint64_t predicted_sample_count(const Mesh& mesh, const SamplingPlan& plan) {
+  const std::vector<std::uint32_t>& sizes = plan.lattice_sizes;
   std::vector<std::uint8_t> vertex_used(mesh.vertex_count(), 0);
   // A tiny step gives up to 2 * 10^18 samples per triangle: the sum saturates rather than
   // wrap to a count small enough to pass the memory guard.
@@ -166,13 +166,17 @@ std::uint64_t predicted_sample_count(const Mesh& mesh, double step, SamplingSche
 }
 
 SampleSet sample_mesh(Mesh workpiece, double step, SamplingScheme scheme, SamplingReport* report) {
+  SamplingPlan plan = plan_sampling(workpiece, step, scheme);
+  return sample_mesh(std::move(workpiece), std::move(plan), report);
+}
+
+SampleSet sample_mesh(Mesh workpiece, SamplingPlan plan, SamplingReport* report) {
   SampleSet set;
   set.workpiece = std::move(workpiece);
-  set.step = step;
-  set.scheme = scheme;
+  set.step = plan.step;
+  set.scheme = plan.scheme;
   set.workpiece_hash = mesh_hash(set.workpiece);
-  SamplingReport counts;
-  set.tri_n = lattice_sizes(set.workpiece, step, scheme, &counts);
+  set.tri_n = std::move(plan.lattice_sizes);
 
   const std::uint32_t vertex_samples = assign_vertex_samples(set);
   set.tri_first.resize(set.tri_n.size());
@@ -182,7 +186,8 @@ SampleSet sample_mesh(Mesh workpiece, double step, SamplingScheme scheme, Sampli
     // Only reachable past the memory guard (--force): a wrapped count would size the
     // arrays too small for the lattice written into them.
     if (__builtin_add_overflow(next, lattice_interior_count(set.tri_n[t]), &next)) {
-      throw UsageError(fmt::format("sampling at step {} would give more than 2^64 samples", step));
+      throw UsageError(
+          fmt::format("sampling at step {} would give more than 2^64 samples", set.step));
     }
   }
   set.positions.resize(next);
@@ -196,7 +201,7 @@ SampleSet sample_mesh(Mesh workpiece, double step, SamplingScheme scheme, Sampli
   });
 
   if (report) {
-    *report = counts;
+    *report = plan.counts;
     report->triangles = set.workpiece.triangle_count();
     report->samples = set.sample_count();
   }

@@ -64,9 +64,25 @@ struct SamplingReport {
   double surface_area = 0;
 };
 
-// Samples that sample_mesh would produce, computed without allocating them.
-std::uint64_t predicted_sample_count(const Mesh& mesh, double step, SamplingScheme scheme);
+// What sampling a mesh at a step gives, worked out before any sample exists: each
+// triangle's lattice size (scheme I lifts n < 2 to 2, corners only; scheme II leaves such
+// a triangle unsampled, 0) and the report's triangle counts. The memory guard reads the
+// sample count from it; sample_mesh then builds on it rather than working it out again.
+struct SamplingPlan {
+  double step = 0;
+  SamplingScheme scheme = SamplingScheme::all;
+  std::vector<std::uint32_t> lattice_sizes;  // per triangle; 0 = not sampled
+  SamplingReport counts;                     // small_triangles, degenerate_triangles, surface_area
+};
 
+SamplingPlan plan_sampling(const Mesh& mesh, double step, SamplingScheme scheme);
+
+// Samples that sample_mesh would produce from the plan, computed without allocating them.
+std::uint64_t predicted_sample_count(const Mesh& mesh, const SamplingPlan& plan);
+
+// The plan must be plan_sampling(workpiece, ...).
+SampleSet sample_mesh(Mesh workpiece, SamplingPlan plan, SamplingReport* report = nullptr);
+// Plans and samples.
 SampleSet sample_mesh(Mesh workpiece, double step, SamplingScheme scheme,
                       SamplingReport* report = nullptr);
 

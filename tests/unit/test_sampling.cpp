@@ -159,8 +159,10 @@ TEST_CASE("scheme II skips exactly the triangles with n < 2", "[sampling]") {
   CHECK(skip.vertex_sample[3] == kNoSample);
   CHECK(report_i.small_triangles == 1);
   CHECK(report_ii.small_triangles == 1);
-  CHECK(predicted_sample_count(mesh, step, SamplingScheme::all) == all.sample_count());
-  CHECK(predicted_sample_count(mesh, step, SamplingScheme::paper_ii) == skip.sample_count());
+  CHECK(predicted_sample_count(mesh, plan_sampling(mesh, step, SamplingScheme::all)) ==
+        all.sample_count());
+  CHECK(predicted_sample_count(mesh, plan_sampling(mesh, step, SamplingScheme::paper_ii)) ==
+        skip.sample_count());
 }
 
 TEST_CASE("degenerate triangles are counted and sampled at their vertices", "[sampling]") {
@@ -214,5 +216,6 @@ TEST_CASE("a vertex sample belongs to the lowest-index sampled triangle, on any 
     REQUIRE(one.owner[s] == lowest[v]);
     REQUIRE(one.sample_at(lowest[v], one.lattice_i[s], one.lattice_j[s]) == s);
   }
-  CHECK(predicted_sample_count(mesh, step, SamplingScheme::paper_ii) == one.sample_count());
+  CHECK(predicted_sample_count(mesh, plan_sampling(mesh, step, SamplingScheme::paper_ii)) ==
+        one.sample_count());
 }
