@@ -23,8 +23,8 @@ void read_distances(ncv::Buffer<char> bytes) {
   std::ostringstream out;
   out << ncv::report_text(report) << ncv::report_json(report).dump() << ncv::report_csv_row(report);
   const ncv::ColorMap map = ncv::make_color_map(ncv::ColorMapKind::tolerance, {-1, 1}, tolerance);
-  ncv::write_error_ply(out, ncv::workpiece_error_mesh(set.samples, set.field.distance), map);
-  ncv::write_error_ply(out, ncv::lattice_error_mesh(set.samples, set.field.distance), map);
+  ncv::error_ply(ncv::workpiece_error_mesh(set.samples, set.field.distance), map);
+  ncv::error_ply(ncv::lattice_error_mesh(set.samples, set.field.distance), map);
 }
 
 }  // namespace

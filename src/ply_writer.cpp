@@ -93,10 +93,4 @@ Buffer<char> error_ply(const ErrorMesh& mesh, const ColorMap& map,
   return bytes;
 }
 
-void write_error_ply(std::ostream& out, const ErrorMesh& mesh, const ColorMap& map,
-                     std::span<const std::string> comments) {
-  const Buffer<char> bytes = error_ply(mesh, map, comments);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
-
 }  // namespace ncv

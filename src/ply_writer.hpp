@@ -5,7 +5,6 @@
 // no sample lies. Faces: list uchar int vertex_indices.
 #pragma once
 
-#include <ostream>
 #include <span>
 #include <string>
 
@@ -20,8 +19,5 @@ namespace ncv {
 // the colour map.
 Buffer<char> error_ply(const ErrorMesh& mesh, const ColorMap& map,
                        std::span<const std::string> comments = {});
-// The same bytes to a stream.
-void write_error_ply(std::ostream& out, const ErrorMesh& mesh, const ColorMap& map,
-                     std::span<const std::string> comments = {});
 
 }  // namespace ncv

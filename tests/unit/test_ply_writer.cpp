@@ -5,7 +5,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -69,10 +68,9 @@ std::int32_t int_at(const std::string& body, std::size_t offset) {
 }
 
 std::string to_ply(const ErrorMesh& mesh, const ncv::ColorMap& map) {
-  std::ostringstream out;
   const std::vector<std::string> comments = {"ncverify test", "two\nlines"};
-  ncv::write_error_ply(out, mesh, map, comments);
-  return out.str();
+  const ncv::Buffer<char> bytes = ncv::error_ply(mesh, map, comments);
+  return {bytes.begin(), bytes.end()};
 }
 
 // Reads the file back with OpenMesh, as MeshLab-style tools would.
