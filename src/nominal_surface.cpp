@@ -69,6 +69,14 @@ std::string describe_defects(const TopologyReport& t, double volume_tolerance) {
   return reason;
 }
 
+void normalize_all(std::vector<Vec3>& vectors) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vectors.size(), 1 << 14),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i < range.end(); ++i)
+                        vectors[i] = normalized(vectors[i]);
+                    });
+}
+
 }  // namespace
 
 NominalSurface::NominalSurface(Mesh mesh, const std::string& source) {
@@ -89,11 +97,21 @@ NominalSurface::NominalSurface(Mesh mesh, const std::string& source) {
   }
   choose_sign_method(source);
 
-  corners_.resize(local_.triangle_count());
-  for (std::size_t t = 0; t < corners_.size(); ++t) {
-    corners_[t] = {local_.corner(t, 0), local_.corner(t, 1), local_.corner(t, 2)};
-  }
+  copy_corners();
   compute_normals(incidence);
+}
+
+// Into an uninitialised buffer, in parallel: zero-filling 72 bytes per triangle first, on
+// one thread, took as long as the copy (a 968 k-triangle nominal: 54 ms).
+void NominalSurface::copy_corners() {
+  corners_.resize(local_.triangle_count());
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, corners_.size(), 1 << 14),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t t = range.begin(); t < range.end(); ++t) {
+          corners_[t] = {local_.corner(t, 0), local_.corner(t, 1), local_.corner(t, 2)};
+        }
+      });
 }
 
 void NominalSurface::orient_outward(const std::string& source) {
@@ -116,36 +134,39 @@ void NominalSurface::choose_sign_method(const std::string& source) {
 
 void NominalSurface::compute_normals(const EdgeIncidence& incidence) {
   const std::size_t triangles = local_.triangle_count();
-  face_normals_.assign(triangles, Vec3{});
+  face_normals_.resize(triangles);
   vertex_normals_.assign(local_.vertex_count(), Vec3{});
   edge_normals_.assign(incidence.edge_count(), Vec3{});
   edge_of_slot_ = incidence.edge_of_slot;
-  // Face normals and the angle-weighted corner contributions in parallel; the sums below
-  // stay serial, in triangle order, so they do not depend on the thread count.
-  std::vector<std::array<Vec3, 3>> corner_normals(triangles);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles, 1 << 12),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t t = range.begin(); t < range.end(); ++t) {
-                        const auto& [a, b, c] = corners_[t];
-                        if (is_degenerate_triangle(a, b, c)) continue;
-                        const Vec3 n = normalized(cross(b - a, c - a));
-                        face_normals_[t] = n;
-                        corner_normals[t] = {corner_angle(a, b, c) * n, corner_angle(b, c, a) * n,
-                                             corner_angle(c, a, b) * n};
-                      }
-                    });
+  // Face normals and corner angles in parallel; the angle-weighted sums below stay serial,
+  // in triangle order, so they do not depend on the thread count. The angles are kept
+  // rather than their products with the normal: a third of the memory to write and read.
+  Buffer<std::array<double, 3>> corner_angles(triangles);
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, triangles, 1 << 12),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t t = range.begin(); t < range.end(); ++t) {
+          const auto& [a, b, c] = corners_[t];
+          if (is_degenerate_triangle(a, b, c)) {
+            face_normals_[t] = Vec3{};
+            continue;
+          }
+          face_normals_[t] = normalized(cross(b - a, c - a));
+          corner_angles[t] = {corner_angle(a, b, c), corner_angle(b, c, a), corner_angle(c, a, b)};
+        }
+      });
   for (std::size_t t = 0; t < triangles; ++t) {
     if (face_normals_[t] == Vec3{}) continue;  // degenerate (a real unit normal is never zero)
     const Vec3 n = face_normals_[t];
     const Triangle& tri = local_.triangles[t];
-    for (int k = 0; k < 3; ++k) vertex_normals_[tri[k]] += corner_normals[t][k];
+    for (int k = 0; k < 3; ++k) vertex_normals_[tri[k]] += corner_angles[t][k] * n;
     for (std::size_t k = 0; k < 3; ++k) {
       const std::uint32_t edge = edge_of_slot_[3 * t + k];
       if (edge != kNoEdge) edge_normals_[edge] += n;
     }
   }
-  for (Vec3& n : vertex_normals_) n = normalized(n);
-  for (Vec3& n : edge_normals_) n = normalized(n);
+  normalize_all(vertex_normals_);
+  normalize_all(edge_normals_);
 }
 
 Vec3 NominalSurface::pseudonormal(std::size_t triangle, TriangleFeature feature) const {

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "buffer.hpp"
 #include "closest_point.hpp"
 #include "mesh.hpp"
 #include "mesh_topology.hpp"
@@ -73,17 +74,18 @@ class NominalSurface {
  private:
   void orient_outward(const std::string& source);
   void choose_sign_method(const std::string& source);
+  void copy_corners();
   void compute_normals(const EdgeIncidence& incidence);
 
   Vec3 origin_;
   Mesh local_;
-  std::vector<TriangleCorners> corners_;
+  Buffer<TriangleCorners> corners_;
   BoundingBox local_bounds_;
   TopologyReport topology_;
   bool flipped_ = false;
   SignMethod automatic_sign_ = SignMethod::pseudonormal;
   std::string winding_reason_;
-  std::vector<Vec3> face_normals_;
+  Buffer<Vec3> face_normals_;
   std::vector<Vec3> vertex_normals_;
   std::vector<Vec3> edge_normals_;
   std::vector<std::uint32_t> edge_of_slot_;
