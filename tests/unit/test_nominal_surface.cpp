@@ -1,6 +1,10 @@
 // The nominal prepared for queries: local frame, input checks, orientation, normals and
 // pseudonormals, and the automatic choice of sign method.
+#include <cmath>
+
 #include <catch2/catch.hpp>
+
+#include <tbb/global_control.h>
 
 #include "error.hpp"
 #include "nominal_fixtures.hpp"
@@ -179,4 +183,36 @@ TEST_CASE("sign method names round-trip", "[nominal]") {
   }
   CHECK_FALSE(ncv::parse_sign_method("normal").has_value());
   CHECK(ncv::sign_method_name(static_cast<ncv::SignMethod>(9)) == "unknown");
+}
+
+// Corners, face normals and the angle-weighted sums are built in parallel (the sums in
+// triangle order): every bit must be the same on any thread count. The torus has more
+// triangles than one parallel chunk, so two threads really split the work.
+TEST_CASE("nominal: corners and pseudonormals do not depend on the thread count", "[nominal]") {
+  const ncv::Mesh torus = fx::torus(5.0, 1.5, 256, 128);
+  REQUIRE(torus.triangle_count() > 3 * (1 << 14));
+  const auto build = [&](std::size_t threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    return ncv::NominalSurface(torus, "torus");
+  };
+  const ncv::NominalSurface one = build(1);
+  const ncv::NominalSurface two = build(2);
+  const auto features = {ncv::TriangleFeature::face,    ncv::TriangleFeature::edge0,
+                         ncv::TriangleFeature::edge1,   ncv::TriangleFeature::edge2,
+                         ncv::TriangleFeature::vertex0, ncv::TriangleFeature::vertex1,
+                         ncv::TriangleFeature::vertex2};
+  std::size_t differences = 0;
+  for (std::size_t t = 0; t < one.triangle_count(); ++t) {
+    differences += one.corners(t) != two.corners(t);
+    for (const ncv::TriangleFeature feature : features) {
+      differences += one.pseudonormal(t, feature) != two.pseudonormal(t, feature);
+    }
+  }
+  CHECK(differences == 0);
+  // And they are what the definition gives: unit length, and on a torus the face normal
+  // and its corners' normals point the same way.
+  for (std::size_t t = 0; t < one.triangle_count(); t += 97) {
+    CHECK(std::abs(ncv::norm(one.pseudonormal(t, ncv::TriangleFeature::vertex0)) - 1) < 1e-12);
+    CHECK(ncv::dot(one.face_normal(t), one.pseudonormal(t, ncv::TriangleFeature::vertex1)) > 0.9);
+  }
 }
