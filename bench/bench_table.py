@@ -294,11 +294,12 @@ def main():
                    g["bytes_per_triangle"] < 100)
     target("peak memory, finishing", f"{fin2['peak_memory_bytes'] / 2**20:.0f} MB", "< 1 GB",
            fin2["peak_memory_bytes"] < 2**30)
-    for growth, unit, paired in ((step_growth, "", None), (nominal_growth, " nominal", nominal_ratio)):
+    step_ratio = ns_per_sample(step_growth[-1][1]) / ns_per_sample(step_growth[0][1])
+    for growth, unit, ratio, how in ((step_growth, "", step_ratio, ""),
+                                     (nominal_growth, " nominal", nominal_ratio,
+                                      " (median of rounds)")):
         if len(growth) >= 2:
             (first, a), (last, b) = growth[0], growth[-1]
-            ratio = paired if paired is not None else ns_per_sample(b) / ns_per_sample(a)
-            how = " (median of rounds)" if paired is not None else ""
             target(f"ns/sample {last} vs {first}{unit}",
                    f"{ns_per_sample(b):.0f} / {ns_per_sample(a):.0f}; {ratio:.2f}{how}",
                    "nearly flat", ratio < 2)
