@@ -8,6 +8,7 @@
 #include "grid_file.hpp"
 #include "input_bytes.hpp"
 #include "samples_file.hpp"
+#include "search_grid.hpp"
 
 namespace ncv::cmd {
 namespace {
@@ -24,8 +25,10 @@ void run_distance(const DistanceOptions& options) {
   OutputFile out(default_output(options.output, options.samples, ".dist"), OutputKind::binary);
   SampleSet samples = read_samples_file(options.samples);
   const NominalGrid grid = read_grid_file(options.grid);
+  const SearchGrid search(grid.nominal->corners(), grid.grid);
   double seconds = 0;
-  const DistanceSet result = measure_distances(std::move(samples), grid, options.step, &seconds);
+  const DistanceSet result =
+      measure_distances(std::move(samples), grid, search, options.step, &seconds);
   write_distance_file(result, out);
   out.commit();
   log_distance_report(result, seconds);

@@ -15,6 +15,7 @@
 #include "option_checks.hpp"
 #include "report_options.hpp"
 #include "samples_file.hpp"
+#include "search_grid.hpp"
 #include "stopwatch.hpp"
 
 namespace ncv::cmd {
@@ -128,6 +129,7 @@ void run_all(const RunOptions& options, CommandContext& context) {
   GridStatistics grid_statistics;
   const NominalGrid grid = build_nominal_grid(std::move(nominal), input_name(options.nominal),
                                               GridOptions{options.cell_size}, &grid_statistics);
+  const SearchGrid search(grid.nominal->corners(), grid.grid);
   phases.done("grid-build");
   phases.time("write", [&] {
     write_file(folder / (stem(options.nominal) + ".grid"), OutputKind::binary,
@@ -136,7 +138,7 @@ void run_all(const RunOptions& options, CommandContext& context) {
 
   double distance_seconds = 0;
   const DistanceSet distances =
-      measure_distances(std::move(samples), grid, options.distance, &distance_seconds);
+      measure_distances(std::move(samples), grid, search, options.distance, &distance_seconds);
   log_distance_report(distances, distance_seconds);
   phases.done("distance");
   phases.time("write", [&] {

@@ -36,8 +36,9 @@ void read_grid(ncv::Buffer<char> bytes) {
   const ncv::NominalGrid g = ncv::load_nominal_grid(c);
   const std::vector<ncv::Vec3> points = query_points(g.mesh);
   const ncv::SignMethod sign = g.nominal->automatic_sign_method();
+  const ncv::SearchGrid search(g.nominal->corners(), g.grid);
   const ncv::DistanceField field =
-      ncv::compute_signed_distances(*g.nominal, &g.grid, points, {}, sign);
+      ncv::compute_signed_distances(*g.nominal, &search, points, {}, sign);
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (field.closest_face[i] >= g.mesh.triangle_count()) __builtin_trap();
   }

@@ -42,8 +42,9 @@ void verify(const ncv::Mesh& workpiece) {
 
   const ncv::NominalGrid g = ncv::build_nominal_grid(workpiece, "fuzz", {}, nullptr);
   const ncv::SignMethod sign = g.nominal->automatic_sign_method();
+  const ncv::SearchGrid search(g.nominal->corners(), g.grid);
   const ncv::DistanceField by_grid =
-      ncv::compute_signed_distances(*g.nominal, &g.grid, samples.positions, {}, sign);
+      ncv::compute_signed_distances(*g.nominal, &search, samples.positions, {}, sign);
   const ncv::DistanceField by_brute_force =
       ncv::compute_signed_distances(*g.nominal, nullptr, samples.positions, {}, sign);
   for (std::size_t i = 0; i < samples.sample_count(); ++i) {

@@ -71,7 +71,7 @@ void refuse_if_apart(const BoundingBox& workpiece, const std::string& workpiece_
   }
 }
 
-DistanceSet measure_distances(SampleSet samples, const NominalGrid& grid,
+DistanceSet measure_distances(SampleSet samples, const NominalGrid& grid, const SearchGrid& search,
                               const DistanceStepOptions& options, double* seconds) {
   check_belong_together(samples, grid);
   const SignMethod method = resolve_sign_method(*grid.nominal, options.sign);
@@ -83,7 +83,7 @@ DistanceSet measure_distances(SampleSet samples, const NominalGrid& grid,
   Progress progress("distance", samples.sample_count());
   DistanceSet result;
   result.field = compute_signed_distances(
-      *grid.nominal, options.brute_force ? nullptr : &grid.grid, samples.positions, normals, method,
+      *grid.nominal, options.brute_force ? nullptr : &search, samples.positions, normals, method,
       &statistics, [&](std::size_t done, std::size_t) { progress.update(done); });
   progress.finish();
   if (seconds) *seconds = clock.seconds();

@@ -5,6 +5,7 @@
 #include "distance_file.hpp"
 #include "grid_file.hpp"
 #include "sampling.hpp"
+#include "search_grid.hpp"
 
 namespace ncv {
 
@@ -14,14 +15,15 @@ struct DistanceStepOptions {
 };
 
 // Refuses (InputError) a workpiece farther from the nominal than the size of either part,
-// warns when they barely overlap, differ in size five times or are the same mesh (a wrong
-// file, unit or frame?), then measures every sample; `seconds` receives the time the
-// measuring took.
-// The refusal above on its own, from the two meshes' bounding boxes, so that `run` can
-// refuse before sampling; throws InputError naming the workpiece source.
+// from the two meshes' bounding boxes, so that `run` can refuse before sampling; throws
+// InputError naming the workpiece source.
 void refuse_if_apart(const BoundingBox& workpiece, const std::string& workpiece_source,
                      const BoundingBox& nominal, const std::string& nominal_source);
-DistanceSet measure_distances(SampleSet samples, const NominalGrid& grid,
+// The same refusal; then warns when they barely overlap, differ in size five times or are
+// the same mesh (a wrong file, unit or frame?), then measures every sample; `seconds`
+// receives the time the measuring took. `search` is made from grid.nominal's corners and
+// grid.grid (not read with brute_force).
+DistanceSet measure_distances(SampleSet samples, const NominalGrid& grid, const SearchGrid& search,
                               const DistanceStepOptions& options, double* seconds = nullptr);
 // Samples per second, triangles tested per sample and the sign method, on stderr.
 void log_distance_report(const DistanceSet& distances, double seconds);

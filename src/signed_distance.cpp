@@ -59,17 +59,17 @@ struct Worker {
 
 class SignedDistanceJob {
  public:
-  SignedDistanceJob(const NominalSurface& nominal, const UniformGrid* grid,
+  SignedDistanceJob(const NominalSurface& nominal, const SearchGrid* grid,
                     std::span<const Vec3> points, std::span<const Vec3> normals, SignMethod method)
       : nominal_(nominal), grid_(grid), points_(points), normals_(normals), method_(method) {
     if (method_ == SignMethod::winding)
       tree_ = std::make_unique<WindingNumberTree>(nominal.corners());
-    if (grid_) boxes_ = build_reference_boxes(nominal.corners(), *grid_);
   }
 
   void run(DistanceField& field, std::size_t begin, std::size_t end) {
     Worker& worker = workers_.local();
-    if (grid_ && !worker.search) worker.search.emplace(nominal_.corners(), *grid_, boxes_);
+    if (grid_ && !worker.search)
+      worker.search.emplace(nominal_.corners(), grid_->grid(), grid_->boxes());
     for (std::size_t i = begin; i < end; ++i) {
       if (worker.search && i % kBlockSize == 0) worker.search->forget_hint();
       const Vec3 p = nominal_.to_local(points_[i]);
@@ -121,12 +121,11 @@ class SignedDistanceJob {
   }
 
   const NominalSurface& nominal_;
-  const UniformGrid* grid_;
+  const SearchGrid* grid_;
   std::span<const Vec3> points_;
   std::span<const Vec3> normals_;
   SignMethod method_;
   std::unique_ptr<WindingNumberTree> tree_;
-  Buffer<BoxBlock> boxes_;
   tbb::enumerable_thread_specific<Worker> workers_;
 };
 
@@ -136,7 +135,7 @@ SignMethod resolve_sign_method(const NominalSurface& nominal, SignMethod request
   return requested == SignMethod::automatic ? nominal.automatic_sign_method() : requested;
 }
 
-DistanceField compute_signed_distances(const NominalSurface& nominal, const UniformGrid* grid,
+DistanceField compute_signed_distances(const NominalSurface& nominal, const SearchGrid* grid,
                                        std::span<const Vec3> points,
                                        std::span<const Vec3> sample_normals, SignMethod method,
                                        SearchStatistics* statistics,

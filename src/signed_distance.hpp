@@ -28,8 +28,8 @@
 
 #include "buffer.hpp"
 #include "nominal_surface.hpp"
+#include "search_grid.hpp"
 #include "sign_method.hpp"
-#include "uniform_grid.hpp"
 
 namespace ncv {
 
@@ -61,8 +61,8 @@ SignMethod resolve_sign_method(const NominalSurface& nominal, SignMethod request
 // `points` in the global frame, each finite and within kMaxNominalCoordinate (InputError
 // otherwise, naming "query points"). `sample_normals` is read only by SignMethod::paper
 // and must then hold one normal per point (UsageError otherwise). `grid` must have been
-// built for this nominal or validated against it; nullptr searches by brute force.
-DistanceField compute_signed_distances(const NominalSurface& nominal, const UniformGrid* grid,
+// made from this nominal's corners; nullptr searches by brute force.
+DistanceField compute_signed_distances(const NominalSurface& nominal, const SearchGrid* grid,
                                        std::span<const Vec3> points,
                                        std::span<const Vec3> sample_normals, SignMethod method,
                                        SearchStatistics* statistics = nullptr,

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <bit>
+#include <optional>
 #include <random>
 #include <thread>
 
@@ -13,6 +14,7 @@
 #include "error.hpp"
 #include "grid_builder.hpp"
 #include "nominal_fixtures.hpp"
+#include "search_grid.hpp"
 #include "signed_distance.hpp"
 
 namespace {
@@ -24,7 +26,10 @@ namespace fx = ncv::fixtures;
 ncv::DistanceField distances(const ncv::NominalSurface& nominal, const ncv::UniformGrid* grid,
                              const std::vector<Vec3>& points, SignMethod method,
                              ncv::SearchStatistics* stats = nullptr) {
-  return ncv::compute_signed_distances(nominal, grid, points, {}, method, stats);
+  std::optional<ncv::SearchGrid> search;
+  if (grid) search.emplace(nominal.corners(), *grid);
+  return ncv::compute_signed_distances(nominal, search ? &*search : nullptr, points, {}, method,
+                                       stats);
 }
 
 // Query points of every kind around a mesh: on it, just off it, inside its box, far out,
@@ -368,13 +373,14 @@ TEST_CASE("search statistics count queries, triangles and cells", "[distance]") 
 TEST_CASE("progress is reported from the calling thread, ending at the total", "[distance]") {
   const ncv::NominalSurface nominal(fx::torus(3, 1, 40, 20), "torus");
   const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal);
+  const ncv::SearchGrid search(nominal.corners(), grid);
   std::mt19937_64 rng(71);
   std::vector<Vec3> points;
   for (int i = 0; i < 20000; ++i) points.push_back(fx::random_point(rng, {-5, -5, -2}, {5, 5, 2}));
   std::vector<std::pair<std::size_t, std::size_t>> calls;
   bool other_thread = false;
   const auto caller = std::this_thread::get_id();
-  ncv::compute_signed_distances(nominal, &grid, points, {}, SignMethod::automatic, nullptr,
+  ncv::compute_signed_distances(nominal, &search, points, {}, SignMethod::automatic, nullptr,
                                 [&](std::size_t done, std::size_t total) {
                                   other_thread |= std::this_thread::get_id() != caller;
                                   calls.emplace_back(done, total);
