@@ -1,8 +1,12 @@
 #include "mesh_topology.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <numeric>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/parallel_sort.h>
 
 namespace ncv {
@@ -89,24 +93,60 @@ std::uint64_t count_non_manifold_vertices(const Mesh& mesh, const EdgeIncidence&
   return non_manifold;
 }
 
+struct EdgeKinds {
+  std::uint64_t boundary = 0, non_manifold = 0, misoriented = 0;
+};
+
 void count_edge_kinds(const Mesh& mesh, const EdgeIncidence& incidence, TopologyReport& report) {
   report.edges = incidence.edge_count();
-  for (std::size_t e = 0; e < incidence.edge_count(); ++e) {
-    const std::uint32_t count = incidence.slot_count(e);
-    if (count == 1) ++report.boundary_edges;
-    if (count > 2) ++report.non_manifold_edges;
-    std::uint32_t forward = 0;
-    for (std::uint32_t i = incidence.edge_begin[e]; i < incidence.edge_begin[e + 1]; ++i) {
-      const std::uint32_t s = incidence.slots[i];
-      if (slot_start(mesh, s) < slot_end(mesh, s)) ++forward;
-    }
-    if (count >= 2 && 2 * forward != count) ++report.misoriented_edges;
-  }
+  const EdgeKinds kinds = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, incidence.edge_count(), 1 << 14), EdgeKinds{},
+      [&](const tbb::blocked_range<std::size_t>& range, EdgeKinds part) {
+        for (std::size_t e = range.begin(); e != range.end(); ++e) {
+          const std::uint32_t count = incidence.slot_count(e);
+          part.boundary += count == 1;
+          part.non_manifold += count > 2;
+          std::uint32_t forward = 0;
+          for (std::uint32_t i = incidence.edge_begin[e]; i < incidence.edge_begin[e + 1]; ++i) {
+            const std::uint32_t s = incidence.slots[i];
+            forward += slot_start(mesh, s) < slot_end(mesh, s);
+          }
+          part.misoriented += count >= 2 && 2 * forward != count;
+        }
+        return part;
+      },
+      [](EdgeKinds a, const EdgeKinds& b) {
+        a.boundary += b.boundary;
+        a.non_manifold += b.non_manifold;
+        a.misoriented += b.misoriented;
+        return a;
+      });
+  report.boundary_edges = kinds.boundary;
+  report.non_manifold_edges = kinds.non_manifold;
+  report.misoriented_edges = kinds.misoriented;
+}
+
+std::uint64_t count_degenerate(const Mesh& mesh) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, mesh.triangle_count(), 1 << 14), std::uint64_t{0},
+      [&](const tbb::blocked_range<std::size_t>& range, std::uint64_t part) {
+        for (std::size_t t = range.begin(); t != range.end(); ++t) {
+          part += repeats_vertex(mesh.triangles[t]) ||
+                  is_degenerate_triangle(mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2));
+        }
+        return part;
+      },
+      std::plus<>());
 }
 
 std::uint64_t count_duplicates(const Mesh& mesh) {
   std::vector<Triangle> sorted(mesh.triangles);
-  for (Triangle& t : sorted) std::sort(t.begin(), t.end());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sorted.size(), 1 << 14),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t t = range.begin(); t != range.end(); ++t) {
+                        std::sort(sorted[t].begin(), sorted[t].end());
+                      }
+                    });
   tbb::parallel_sort(sorted.begin(), sorted.end());  // equal triangles end up adjacent either way
   std::uint64_t duplicates = 0;
   for (std::size_t i = 1; i < sorted.size(); ++i) duplicates += sorted[i] == sorted[i - 1];
@@ -132,6 +172,8 @@ bool is_degenerate_triangle(Vec3 a, Vec3 b, Vec3 c) {
   return norm(cross(b - a, c - a)) <= 1e-10 * longest_sq;
 }
 
+// Each vertex's bucket is sorted by high vertex and its runs (edges) counted in parallel;
+// the edges are then numbered bucket after bucket, as a serial pass would number them.
 EdgeIncidence build_edge_incidence(const Mesh& mesh) {
   std::vector<std::uint32_t> bucket_begin;
   std::vector<std::uint32_t> slots = slots_by_low_vertex(mesh, bucket_begin);
@@ -140,22 +182,39 @@ EdgeIncidence build_edge_incidence(const Mesh& mesh) {
     const std::uint32_t hb = slot_high(mesh, b);
     return ha != hb ? ha < hb : a < b;
   };
+  const auto starts_edge = [&](std::uint32_t i, std::size_t v) {
+    return i == bucket_begin[v] || slot_high(mesh, slots[i]) != slot_high(mesh, slots[i - 1]);
+  };
+  const std::size_t vertices = mesh.vertex_count();
+  std::vector<std::uint32_t> first_edge(vertices + 1, 0);  // of each bucket, then the total
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 1 << 12),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t v = range.begin(); v != range.end(); ++v) {
+                        std::sort(slots.begin() + bucket_begin[v],
+                                  slots.begin() + bucket_begin[v + 1], by_high_vertex);
+                        std::uint32_t edges = 0;
+                        for (std::uint32_t i = bucket_begin[v]; i < bucket_begin[v + 1]; ++i) {
+                          edges += starts_edge(i, v);
+                        }
+                        first_edge[v + 1] = edges;
+                      }
+                    });
+  std::partial_sum(first_edge.begin(), first_edge.end(), first_edge.begin());
+
   EdgeIncidence incidence;
   incidence.edge_of_slot.assign(3 * mesh.triangle_count(), kNoEdge);
-  incidence.edge_begin.push_back(0);
-  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
-    const auto begin = slots.begin() + bucket_begin[v];
-    const auto end = slots.begin() + bucket_begin[v + 1];
-    std::sort(begin, end, by_high_vertex);
-    for (auto it = begin; it != end; ++it) {
-      if (it != begin && slot_high(mesh, *it) != slot_high(mesh, *(it - 1))) {
-        incidence.edge_begin.push_back(static_cast<std::uint32_t>(it - slots.begin()));
-      }
-      incidence.edge_of_slot[*it] = static_cast<std::uint32_t>(incidence.edge_begin.size() - 1);
-    }
-    if (begin != end)
-      incidence.edge_begin.push_back(static_cast<std::uint32_t>(end - slots.begin()));
-  }
+  incidence.edge_begin.resize(first_edge.back() + 1);
+  incidence.edge_begin.back() = static_cast<std::uint32_t>(slots.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 1 << 12),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t v = range.begin(); v != range.end(); ++v) {
+                        std::uint32_t next = first_edge[v];  // the next edge to start
+                        for (std::uint32_t i = bucket_begin[v]; i < bucket_begin[v + 1]; ++i) {
+                          if (starts_edge(i, v)) incidence.edge_begin[next++] = i;
+                          incidence.edge_of_slot[slots[i]] = next - 1;
+                        }
+                      }
+                    });
   incidence.slots = std::move(slots);
   return incidence;
 }
@@ -165,11 +224,7 @@ TopologyReport analyse_topology(const Mesh& mesh, const EdgeIncidence& incidence
   report.triangles = mesh.triangle_count();
   count_edge_kinds(mesh, incidence, report);
   report.non_manifold_vertices = count_non_manifold_vertices(mesh, incidence);
-  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-    report.degenerate_triangles +=
-        repeats_vertex(mesh.triangles[t]) ||
-        is_degenerate_triangle(mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2));
-  }
+  report.degenerate_triangles = count_degenerate(mesh);
   report.duplicate_triangles = count_duplicates(mesh);
   report.signed_volume = signed_volume(mesh);
   return report;

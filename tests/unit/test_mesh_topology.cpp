@@ -2,6 +2,11 @@
 // counts that explain why not.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <utility>
+
+#include <tbb/global_control.h>
+
 #include "mesh_topology.hpp"
 #include "nominal_fixtures.hpp"
 
@@ -155,6 +160,73 @@ TEST_CASE("edge incidence groups the slots of each edge", "[topology]") {
   CHECK(incidence.slots[incidence.edge_begin[diagonal] + 1] == 3);
   for (std::uint32_t s : {0u, 2u, 4u, 5u})
     CHECK(incidence.slot_count(incidence.edge_of_slot[s]) == 1);
+}
+
+namespace {
+
+// A torus of 65 k triangles (several parallel chunks of vertices, edges and triangles) with
+// every kind of defect: duplicated, flipped and missing triangles, a repeated corner.
+ncv::Mesh defective_torus() {
+  ncv::Mesh mesh = fx::torus(3, 1, 256, 128);
+  for (std::size_t t = 0; t < mesh.triangles.size(); t += 997) {
+    mesh.triangles.push_back(mesh.triangles[t]);  // duplicated
+  }
+  for (std::size_t t = 500; t < 60000; t += 4001) {
+    std::swap(mesh.triangles[t][1], mesh.triangles[t][2]);  // flipped
+  }
+  for (std::size_t t = 1000; t < 60000; t += 5003) {
+    mesh.triangles[t] = mesh.triangles[t + 1];  // missing: its edges become boundary
+  }
+  mesh.triangles.push_back({7, 7, 8});  // repeated corner
+  return mesh;
+}
+
+}  // namespace
+
+TEST_CASE("edge incidence: edges numbered by (lower, higher) vertex, on any thread count",
+          "[topology]") {
+  const ncv::Mesh mesh = defective_torus();
+  const auto build = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    return std::pair{ncv::build_edge_incidence(mesh), analyse(mesh)};
+  };
+  const auto [one, one_report] = build(1);
+  const auto [two, two_report] = build(2);
+  CHECK(one.edge_of_slot == two.edge_of_slot);
+  CHECK(one.edge_begin == two.edge_begin);
+  CHECK(one.slots == two.slots);
+  CHECK(one_report.edges == two_report.edges);
+  CHECK(one_report.boundary_edges == two_report.boundary_edges);
+  CHECK(one_report.non_manifold_edges == two_report.non_manifold_edges);
+  CHECK(one_report.misoriented_edges == two_report.misoriented_edges);
+  CHECK(one_report.non_manifold_vertices == two_report.non_manifold_vertices);
+  CHECK(one_report.degenerate_triangles == 1);
+  CHECK(two_report.degenerate_triangles == 1);
+  CHECK(one_report.duplicate_triangles == two_report.duplicate_triangles);
+  CHECK(one_report.duplicate_triangles >= 66);  // 66 copies, plus the missing triangles' twins
+  CHECK(one_report.boundary_edges > 0);
+  CHECK(one_report.misoriented_edges > 0);
+
+  // Each edge's slots join the same two vertices; edges ascend by (lower, higher) vertex;
+  // each slot's edge lists it; the repeated-corner triangle's slots have none.
+  const auto ends = [&](std::uint32_t slot) {
+    const ncv::Triangle& t = mesh.triangles[slot / 3];
+    const std::uint32_t a = t[slot % 3], b = t[(slot % 3 + 1) % 3];
+    return std::pair{std::min(a, b), std::max(a, b)};
+  };
+  std::size_t faults = 0;
+  for (std::size_t e = 0; e < two.edge_count(); ++e) {
+    const auto first = ends(two.slots[two.edge_begin[e]]);
+    if (e > 0) faults += !(ends(two.slots[two.edge_begin[e - 1]]) < first);
+    for (std::uint32_t i = two.edge_begin[e]; i < two.edge_begin[e + 1]; ++i) {
+      faults += ends(two.slots[i]) != first;
+      faults += two.edge_of_slot[two.slots[i]] != e;
+    }
+  }
+  CHECK(faults == 0);
+  const std::size_t last = mesh.triangles.size() - 1;
+  for (std::size_t k = 0; k < 3; ++k) CHECK(two.edge_of_slot[3 * last + k] == ncv::kNoEdge);
+  CHECK(two.edge_begin.back() == two.slots.size());
 }
 
 TEST_CASE("degenerate triangle predicate", "[topology]") {
