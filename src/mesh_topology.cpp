@@ -186,7 +186,9 @@ EdgeIncidence build_edge_incidence(const Mesh& mesh) {
     return i == bucket_begin[v] || slot_high(mesh, slots[i]) != slot_high(mesh, slots[i - 1]);
   };
   const std::size_t vertices = mesh.vertex_count();
-  std::vector<std::uint32_t> first_edge(vertices + 1, 0);  // of each bucket, then the total
+  // Bucket v's edge count at v + 1; after the prefix sum, bucket v's first edge at v and the
+  // total last.
+  std::vector<std::uint32_t> first_edge(vertices + 1, 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 1 << 12),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t v = range.begin(); v != range.end(); ++v) {

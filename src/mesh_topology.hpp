@@ -6,8 +6,9 @@
 // part in the edge structure (they are counted as degenerate): a triangle (a, a, b) would
 // otherwise use edge {a, b} once in each direction and hide a hole.
 //
-// Built by bucketing slots by their lower vertex index and sorting each small bucket, so
-// it is linear in practice and needs no hash map: about 30 bytes per triangle.
+// Built by bucketing slots by their lower vertex index and sorting each small bucket (the
+// buckets in parallel), so it is linear in practice and needs no hash map: about 30 bytes
+// per triangle.
 #pragma once
 
 #include <cstdint>
