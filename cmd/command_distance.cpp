@@ -25,10 +25,11 @@ void run_distance(const DistanceOptions& options) {
   OutputFile out(default_output(options.output, options.samples, ".dist"), OutputKind::binary);
   SampleSet samples = read_samples_file(options.samples);
   const NominalGrid grid = read_grid_file(options.grid);
-  const SearchGrid search(grid.nominal->corners(), grid.grid);
   double seconds = 0;
-  const DistanceSet result =
-      measure_distances(std::move(samples), grid, search, options.step, &seconds);
+  const DistanceSet result = [&] {  // the search's boxes freed before the file is written
+    const SearchGrid search(grid.nominal->corners(), grid.grid);
+    return measure_distances(std::move(samples), grid, search, options.step, &seconds);
+  }();
   write_distance_file(result, out);
   out.commit();
   log_distance_report(result, seconds);
