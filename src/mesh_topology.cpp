@@ -29,9 +29,11 @@ std::uint32_t slot_high(const Mesh& mesh, std::uint32_t slot) {
   return std::max(slot_start(mesh, slot), slot_end(mesh, slot));
 }
 
-// Slots of usable triangles, bucketed by lower vertex (counting sort keeps slot order).
-std::vector<std::uint32_t> slots_by_low_vertex(const Mesh& mesh,
-                                               std::vector<std::uint32_t>& bucket_begin) {
+// Slots of usable triangles as keys (higher vertex << 32 | slot), bucketed by lower vertex
+// (counting sort keeps slot order). Sorting a bucket's keys orders its slots by higher
+// vertex, then by slot, without reading the mesh again.
+std::vector<std::uint64_t> slot_keys_by_low_vertex(const Mesh& mesh,
+                                                   std::vector<std::uint32_t>& bucket_begin) {
   bucket_begin.assign(mesh.vertex_count() + 1, 0);
   const auto slot_total = static_cast<std::uint32_t>(3 * mesh.triangle_count());
   for (std::uint32_t s = 0; s < slot_total; ++s) {
@@ -39,11 +41,12 @@ std::vector<std::uint32_t> slots_by_low_vertex(const Mesh& mesh,
   }
   std::partial_sum(bucket_begin.begin(), bucket_begin.end(), bucket_begin.begin());
   std::vector<std::uint32_t> cursor(bucket_begin.begin(), bucket_begin.end() - 1);
-  std::vector<std::uint32_t> slots(bucket_begin.back());
+  std::vector<std::uint64_t> keys(bucket_begin.back());
   for (std::uint32_t s = 0; s < slot_total; ++s) {
-    if (!repeats_vertex(mesh.triangles[s / 3])) slots[cursor[slot_low(mesh, s)]++] = s;
+    if (repeats_vertex(mesh.triangles[s / 3])) continue;
+    keys[cursor[slot_low(mesh, s)]++] = std::uint64_t{slot_high(mesh, s)} << 32 | s;
   }
-  return slots;
+  return keys;
 }
 
 struct CornerForest {
@@ -176,14 +179,9 @@ bool is_degenerate_triangle(Vec3 a, Vec3 b, Vec3 c) {
 // the edges are then numbered bucket after bucket, as a serial pass would number them.
 EdgeIncidence build_edge_incidence(const Mesh& mesh) {
   std::vector<std::uint32_t> bucket_begin;
-  std::vector<std::uint32_t> slots = slots_by_low_vertex(mesh, bucket_begin);
-  const auto by_high_vertex = [&](std::uint32_t a, std::uint32_t b) {
-    const std::uint32_t ha = slot_high(mesh, a);
-    const std::uint32_t hb = slot_high(mesh, b);
-    return ha != hb ? ha < hb : a < b;
-  };
+  std::vector<std::uint64_t> keys = slot_keys_by_low_vertex(mesh, bucket_begin);
   const auto starts_edge = [&](std::uint32_t i, std::size_t v) {
-    return i == bucket_begin[v] || slot_high(mesh, slots[i]) != slot_high(mesh, slots[i - 1]);
+    return i == bucket_begin[v] || keys[i] >> 32 != keys[i - 1] >> 32;
   };
   const std::size_t vertices = mesh.vertex_count();
   // Bucket v's edge count at v + 1; after the prefix sum, bucket v's first edge at v and the
@@ -192,8 +190,8 @@ EdgeIncidence build_edge_incidence(const Mesh& mesh) {
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 1 << 12),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t v = range.begin(); v != range.end(); ++v) {
-                        std::sort(slots.begin() + bucket_begin[v],
-                                  slots.begin() + bucket_begin[v + 1], by_high_vertex);
+                        std::sort(keys.begin() + bucket_begin[v],
+                                  keys.begin() + bucket_begin[v + 1]);
                         std::uint32_t edges = 0;
                         for (std::uint32_t i = bucket_begin[v]; i < bucket_begin[v + 1]; ++i) {
                           edges += starts_edge(i, v);
@@ -206,18 +204,20 @@ EdgeIncidence build_edge_incidence(const Mesh& mesh) {
   EdgeIncidence incidence;
   incidence.edge_of_slot.assign(3 * mesh.triangle_count(), kNoEdge);
   incidence.edge_begin.resize(first_edge.back() + 1);
-  incidence.edge_begin.back() = static_cast<std::uint32_t>(slots.size());
+  incidence.edge_begin.back() = static_cast<std::uint32_t>(keys.size());
+  incidence.slots.resize(keys.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 1 << 12),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t v = range.begin(); v != range.end(); ++v) {
                         std::uint32_t next = first_edge[v];  // the next edge to start
                         for (std::uint32_t i = bucket_begin[v]; i < bucket_begin[v + 1]; ++i) {
                           if (starts_edge(i, v)) incidence.edge_begin[next++] = i;
-                          incidence.edge_of_slot[slots[i]] = next - 1;
+                          const auto slot = static_cast<std::uint32_t>(keys[i]);
+                          incidence.slots[i] = slot;
+                          incidence.edge_of_slot[slot] = next - 1;
                         }
                       }
                     });
-  incidence.slots = std::move(slots);
   return incidence;
 }
 

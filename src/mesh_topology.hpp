@@ -8,7 +8,7 @@
 //
 // Built by bucketing slots by their lower vertex index and sorting each small bucket (the
 // buckets in parallel), so it is linear in practice and needs no hash map: about 30 bytes
-// per triangle.
+// per triangle, and 24 more while it is built.
 #pragma once
 
 #include <cstdint>
