@@ -43,6 +43,7 @@ struct TopologyReport {
   std::uint64_t duplicate_triangles = 0;    // same three vertices as an earlier triangle
   double signed_volume = 0;                 // > 0 for an outward-oriented closed surface
 
+  bool operator==(const TopologyReport&) const = default;
   bool closed() const { return boundary_edges == 0 && non_manifold_edges == 0; }
   bool manifold() const { return non_manifold_edges == 0 && non_manifold_vertices == 0; }
   bool consistently_oriented() const { return misoriented_edges == 0; }
