@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "closest_point_search.hpp"
-#include "reference_boxes.hpp"
+#include "search_grid.hpp"
 #include "workload.hpp"
 
 namespace {
@@ -99,8 +99,8 @@ int main(int argc, char** argv) {
   std::vector<ncv::Vec3>& points = w.points;
   for (ncv::Vec3& p : points) p = nominal.to_local(p);
 
-  const auto boxes = ncv::build_reference_boxes(nominal.corners(), w.grid);
-  ncv::GridSearch search(nominal.corners(), w.grid, boxes);
+  const ncv::SearchGrid search_grid(nominal.corners(), w.grid);
+  ncv::GridSearch search(search_grid);
   std::vector<std::uint32_t> answers(points.size());
   const std::vector<DistanceClass> searched = profile(search, points, answers, false);
   const std::vector<DistanceClass> hinted = profile(search, points, answers, true);

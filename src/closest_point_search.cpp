@@ -74,18 +74,20 @@ struct GridSearch::Query {
   SearchCounters* counters = nullptr;
 };
 
-GridSearch::GridSearch(std::span<const TriangleCorners> triangles, const UniformGrid& grid,
-                       std::span<const BoxBlock> boxes)
-    : triangles_(triangles), grid_(grid), boxes_(boxes), stamps_(triangles.size(), 0) {
-  const BoundingBox box = grid.bounds();
+GridSearch::GridSearch(const SearchGrid& search_grid)
+    : triangles_(search_grid.triangles()),
+      grid_(search_grid.grid()),
+      boxes_(search_grid.boxes()),
+      stamps_(triangles_.size(), 0) {
+  const BoundingBox box = grid_.bounds();
   scale_ = std::max(max_abs(box.min), max_abs(box.max));
   for (int axis = 0; axis < 3; ++axis) {
-    origin_[axis] = grid.origin[axis];
+    origin_[axis] = grid_.origin[axis];
     box_min_[axis] = box.min[axis];
     box_max_[axis] = box.max[axis];
-    last_cell_[axis] = std::int64_t{grid.dims[axis]} - 1;
+    last_cell_[axis] = std::int64_t{grid_.dims[axis]} - 1;
   }
-  inverse_cell_ = 1.0 / grid.cell_size;
+  inverse_cell_ = 1.0 / grid_.cell_size;
 }
 
 ClosestHit GridSearch::closest(Vec3 q, SearchCounters& counters) {

@@ -52,6 +52,7 @@
 
 #include "closest_point.hpp"
 #include "reference_boxes.hpp"
+#include "search_grid.hpp"
 #include "uniform_grid.hpp"
 
 namespace ncv {
@@ -82,10 +83,8 @@ ClosestHit brute_force_closest(std::span<const TriangleCorners> triangles, Vec3 
 
 class GridSearch {
  public:
-  // The grid must have been built for (or validated against) these triangles, and `boxes`
-  // be build_reference_boxes(triangles, grid) (shared by the searchers of all threads).
-  GridSearch(std::span<const TriangleCorners> triangles, const UniformGrid& grid,
-             std::span<const BoxBlock> boxes);
+  // `search_grid` is shared by the searchers of all threads and must outlive them.
+  explicit GridSearch(const SearchGrid& search_grid);
 
   ClosestHit closest(Vec3 q, SearchCounters& counters);
   // The next query starts without the previous one's closest triangle.

@@ -68,8 +68,7 @@ class SignedDistanceJob {
 
   void run(DistanceField& field, std::size_t begin, std::size_t end) {
     Worker& worker = workers_.local();
-    if (grid_ && !worker.search)
-      worker.search.emplace(nominal_.corners(), grid_->grid(), grid_->boxes());
+    if (grid_ && !worker.search) worker.search.emplace(*grid_);
     for (std::size_t i = begin; i < end; ++i) {
       if (worker.search && i % kBlockSize == 0) worker.search->forget_hint();
       const Vec3 p = nominal_.to_local(points_[i]);
