@@ -230,7 +230,8 @@ def main():
           f"{t['peak_memory_bytes'] / 2**20:>9.0f}")
     p("")
     if os.path.exists(PROFILE):
-        p("== Search by the samples' distance to the nominal (finishing, 1 thread, search only) ==")
+        p("== Search by the samples' distance to the nominal and by the hint "
+          "(finishing, 1 thread, search only) ==")
         for label, path in (NOMINALS[0], NOMINALS[-1]):
             if not os.path.exists(path):
                 continue

@@ -5,6 +5,8 @@
 // and prints, per class of distance to the nominal, the share of samples, the cells read,
 // the cell-list entries box-checked and the exact tests per sample, and the wall time per
 // sample (two clock reads included, some 40 ns).
+// The same samples are also split by whether the hint was right: on or off the surface, and
+// whether the closest triangle is the previous sample's (the hint) or another one.
 // A second pass searches the samples again in the same order with each one's own closest
 // triangle (from the first pass) as the hint: the cost with a perfect first guess, a floor
 // for what a better hint could save.
@@ -23,17 +25,30 @@
 
 namespace {
 
-struct DistanceClass {
+struct SampleClass {
   const char* name;
-  double below;  // upper bound of the class, model units
+  double below = INFINITY;  // upper bound of a distance class, model units
   std::size_t samples = 0;
   std::uint64_t tested = 0;
   std::uint64_t considered = 0;
   std::uint64_t cells = 0;
   double seconds = 0;
+
+  void add(const ncv::SearchCounters& before, const ncv::SearchCounters& after, double time) {
+    ++samples;
+    tested += after.triangles_tested - before.triangles_tested;
+    considered += after.triangles_considered - before.triangles_considered;
+    cells += after.cells_visited - before.cells_visited;
+    seconds += time;
+  }
 };
 
-std::vector<DistanceClass> distance_classes() {
+struct Profile {
+  std::vector<SampleClass> by_distance;
+  std::vector<SampleClass> by_hint;
+};
+
+std::vector<SampleClass> distance_classes() {
   return {{"on the surface (< 1e-6)", 1e-6},
           {"< 0.01", 0.01},
           {"< 0.1", 0.1},
@@ -41,10 +56,18 @@ std::vector<DistanceClass> distance_classes() {
           {">= 0.3", INFINITY}};
 }
 
-void print(const std::vector<DistanceClass>& classes, std::size_t total) {
-  std::printf("%-26s%10s%8s%12s%8s%12s\n", "distance class", "samples", "cells", "considered",
-              "tested", "ns/sample");
-  for (const DistanceClass& c : classes) {
+// Index: 2 * off the surface + closest triangle changed.
+std::vector<SampleClass> hint_classes() {
+  return {{"on, hint was closest"},
+          {"on, closest changed"},
+          {"off, hint was closest"},
+          {"off, closest changed"}};
+}
+
+void print(const char* title, const std::vector<SampleClass>& classes, std::size_t total) {
+  std::printf("%-26s%10s%8s%12s%8s%12s\n", title, "samples", "cells", "considered", "tested",
+              "ns/sample");
+  for (const SampleClass& c : classes) {
     if (c.samples == 0) continue;
     const auto n = static_cast<double>(c.samples);
     std::printf("%-26s%9.1f%%%8.2f%12.2f%8.2f%12.0f\n", c.name,
@@ -56,16 +79,18 @@ void print(const std::vector<DistanceClass>& classes, std::size_t total) {
 
 // One pass over the points; `answers` receives each point's closest triangle or, when
 // given one, supplies it as the hint.
-std::vector<DistanceClass> profile(ncv::GridSearch& search, const std::vector<ncv::Vec3>& points,
-                                   std::vector<std::uint32_t>& answers, bool answers_as_hints) {
-  std::vector<DistanceClass> classes = distance_classes();
+Profile profile(ncv::GridSearch& search, const std::vector<ncv::Vec3>& points,
+                std::vector<std::uint32_t>& answers, bool answers_as_hints) {
+  Profile result{distance_classes(), hint_classes()};
   ncv::SearchCounters counters;
   using Clock = std::chrono::steady_clock;
+  std::uint32_t previous = ncv::kNoTriangle;
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (answers_as_hints) {
       search.set_hint(answers[i]);
     } else if (i % 512 == 0) {
       search.forget_hint();
+      previous = ncv::kNoTriangle;
     }
     const ncv::SearchCounters before = counters;
     const Clock::time_point start = Clock::now();
@@ -73,17 +98,17 @@ std::vector<DistanceClass> profile(ncv::GridSearch& search, const std::vector<nc
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     answers[i] = hit.triangle;
     const double distance = std::sqrt(hit.squared_distance);
-    for (DistanceClass& c : classes) {
+    for (SampleClass& c : result.by_distance) {
       if (distance >= c.below) continue;
-      ++c.samples;
-      c.tested += counters.triangles_tested - before.triangles_tested;
-      c.considered += counters.triangles_considered - before.triangles_considered;
-      c.cells += counters.cells_visited - before.cells_visited;
-      c.seconds += seconds;
+      c.add(before, counters, seconds);
       break;
     }
+    const bool off = distance >= result.by_distance.front().below;
+    const bool changed = hit.triangle != previous;
+    result.by_hint[2 * off + changed].add(before, counters, seconds);
+    previous = hit.triangle;
   }
-  return classes;
+  return result;
 }
 
 }  // namespace
@@ -102,12 +127,14 @@ int main(int argc, char** argv) {
   const ncv::SearchGrid search_grid(nominal.corners(), w.grid);
   ncv::GridSearch search(search_grid);
   std::vector<std::uint32_t> answers(points.size());
-  const std::vector<DistanceClass> searched = profile(search, points, answers, false);
-  const std::vector<DistanceClass> hinted = profile(search, points, answers, true);
+  const Profile searched = profile(search, points, answers, false);
+  const Profile hinted = profile(search, points, answers, true);
   std::printf("%zu samples, %zu nominal triangles, cell %.3f\n", points.size(),
               nominal.triangle_count(), w.grid.cell_size);
-  print(searched, points.size());
+  print("distance class", searched.by_distance, points.size());
+  print("surface, hint", searched.by_hint, points.size());
   std::printf("the same with each sample's closest triangle as the hint:\n");
-  print(hinted, points.size());
+  print("distance class", hinted.by_distance, points.size());
+  print("surface, hint", hinted.by_hint, points.size());
   return 0;
 }
