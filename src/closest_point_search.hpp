@@ -96,6 +96,8 @@ class GridSearch {
   struct Query;
   void visit_shell(Query& query, std::int64_t m);
   void visit_cell(Query& query, std::uint64_t cell);
+  // The references begin..end (a cell's, not empty).
+  void scan_cell(Query& query, std::uint64_t begin, std::uint64_t end);
   void test(Query& query, std::uint32_t t);
   bool bound_inside_start_cell(const Query& query) const;
   bool covers_grid(const Query& query) const;
