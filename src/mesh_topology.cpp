@@ -1,13 +1,13 @@
 #include "mesh_topology.hpp"
 
 #include <algorithm>
-#include <functional>
 #include <numeric>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_reduce.h>
 #include <tbb/parallel_sort.h>
+
+#include "ordered_reduce.hpp"
 
 namespace ncv {
 namespace {
@@ -100,12 +100,16 @@ struct EdgeKinds {
   std::uint64_t boundary = 0, non_manifold = 0, misoriented = 0;
 };
 
+// Blocks of the parallel counts below (ordered_reduce: fixed blocks, any thread count).
+constexpr std::size_t kCountBlock = 1 << 14;
+
 void count_edge_kinds(const Mesh& mesh, const EdgeIncidence& incidence, TopologyReport& report) {
   report.edges = incidence.edge_count();
-  const EdgeKinds kinds = tbb::parallel_reduce(
-      tbb::blocked_range<std::size_t>(0, incidence.edge_count(), 1 << 14), EdgeKinds{},
-      [&](const tbb::blocked_range<std::size_t>& range, EdgeKinds part) {
-        for (std::size_t e = range.begin(); e != range.end(); ++e) {
+  const EdgeKinds kinds = ordered_reduce(
+      incidence.edge_count(), kCountBlock, EdgeKinds{},
+      [&](std::size_t begin, std::size_t end) {
+        EdgeKinds part;
+        for (std::size_t e = begin; e < end; ++e) {
           const std::uint32_t count = incidence.slot_count(e);
           part.boundary += count == 1;
           part.non_manifold += count > 2;
@@ -118,11 +122,10 @@ void count_edge_kinds(const Mesh& mesh, const EdgeIncidence& incidence, Topology
         }
         return part;
       },
-      [](EdgeKinds a, const EdgeKinds& b) {
-        a.boundary += b.boundary;
-        a.non_manifold += b.non_manifold;
-        a.misoriented += b.misoriented;
-        return a;
+      [](EdgeKinds& acc, const EdgeKinds& part) {
+        acc.boundary += part.boundary;
+        acc.non_manifold += part.non_manifold;
+        acc.misoriented += part.misoriented;
       });
   report.boundary_edges = kinds.boundary;
   report.non_manifold_edges = kinds.non_manifold;
@@ -130,16 +133,17 @@ void count_edge_kinds(const Mesh& mesh, const EdgeIncidence& incidence, Topology
 }
 
 std::uint64_t count_degenerate(const Mesh& mesh) {
-  return tbb::parallel_reduce(
-      tbb::blocked_range<std::size_t>(0, mesh.triangle_count(), 1 << 14), std::uint64_t{0},
-      [&](const tbb::blocked_range<std::size_t>& range, std::uint64_t part) {
-        for (std::size_t t = range.begin(); t != range.end(); ++t) {
+  return ordered_reduce(
+      mesh.triangle_count(), kCountBlock, std::uint64_t{0},
+      [&](std::size_t begin, std::size_t end) {
+        std::uint64_t part = 0;
+        for (std::size_t t = begin; t < end; ++t) {
           part += repeats_vertex(mesh.triangles[t]) ||
                   is_degenerate_triangle(mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2));
         }
         return part;
       },
-      std::plus<>());
+      [](std::uint64_t& acc, std::uint64_t part) { acc += part; });
 }
 
 std::uint64_t count_duplicates(const Mesh& mesh) {
