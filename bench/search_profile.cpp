@@ -25,6 +25,9 @@
 
 namespace {
 
+// Samples nearer the nominal than this (model units) are on its surface.
+constexpr double kOnSurface = 1e-6;
+
 struct SampleClass {
   const char* name;
   double below = INFINITY;  // upper bound of a distance class, model units
@@ -49,7 +52,7 @@ struct Profile {
 };
 
 std::vector<SampleClass> distance_classes() {
-  return {{"on the surface (< 1e-6)", 1e-6},
+  return {{"on the surface (< 1e-6)", kOnSurface},
           {"< 0.01", 0.01},
           {"< 0.1", 0.1},
           {"< 0.3", 0.3},
@@ -103,7 +106,7 @@ Profile profile(ncv::GridSearch& search, const std::vector<ncv::Vec3>& points,
       c.add(before, counters, seconds);
       break;
     }
-    const bool off = distance >= result.by_distance.front().below;
+    const bool off = distance >= kOnSurface;
     const bool changed = hit.triangle != previous;
     result.by_hint[2 * off + changed].add(before, counters, seconds);
     previous = hit.triangle;
