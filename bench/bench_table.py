@@ -229,6 +229,7 @@ def main():
           f"{t['triangles_tested_per_sample']:>8.2f}{t['total']:>9.2f}"
           f"{t['peak_memory_bytes'] / 2**20:>9.0f}")
     p("")
+    search_alone = {}  # nominal label -> (ns/sample, with a perfect hint), whole passes
     if os.path.exists(PROFILE):
         p("== Search by the samples' distance to the nominal and by the hint "
           "(finishing, 1 thread, search only) ==")
@@ -239,6 +240,10 @@ def main():
                                  stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True,
                                  check=True).stdout
             p(f"-- {label} nominal: " + out.rstrip())
+            whole = re.search(r"whole passes.*: ([0-9.]+) ns/sample; with a perfect hint ([0-9.]+)",
+                              out)
+            if whole:
+                search_alone[label] = (float(whole.group(1)), float(whole.group(2)))
         p("")
     p("== Grid build (2 threads, median; command = read, weld, topology, grid, write) ==")
     p(f"{'nominal':<8}{'triangles':>10}{'cells':>10}{'refs/tri':>9}{'B/tri':>7}{'command s':>10}"
@@ -311,6 +316,11 @@ def main():
         p(f"{name:<36}{measured:<34}{goal:<24}{ok}")
     p(f"  paper, finishing scheme I: {PAPER_T1[('finishing', 'all')]['time']} s in all, "
       f"{PAPER_T2['finishing'][0]} triangles tested per sample")
+    if len(search_alone) == 2:
+        (small, (a, a_perfect)), (large, (b, b_perfect)) = search_alone.items()
+        p(f"  {large} vs {small} nominal, search alone (1 thread, whole passes): {b:.0f} / {a:.0f} "
+          f"ns, {b / a:.2f}; with a perfect hint {b_perfect:.0f} / {a_perfect:.0f} ns, "
+          f"{b_perfect / a_perfect:.2f}")
     p("")
     p("== Finishing phases, 1 vs 2 threads (median of runs, s) ==")
     p(f"{'threads':<8}" + "".join(f"{ph:>11}" for ph in PHASES) + f"{'total':>9}")

@@ -10,8 +10,12 @@
 // A second pass searches the samples again in the same order with each one's own closest
 // triangle (from the first pass) as the hint: the cost with a perfect first guess, a floor
 // for what a better hint could save.
+// Last, whole passes timed at once (no clock per sample, whose cost would flatten ratios
+// between nominals), both ways in alternation: the search-alone cost per sample, and its
+// floor with a perfect hint.
 // scripts/bench.sh runs it on the 17 k and the 1.7 M nominal: the classes show what the
 // nominal's size changes.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -114,6 +118,29 @@ Profile profile(ncv::GridSearch& search, const std::vector<ncv::Vec3>& points,
   return result;
 }
 
+// One pass timed as a whole, in seconds per sample.
+double whole_pass(ncv::GridSearch& search, const std::vector<ncv::Vec3>& points,
+                  const std::vector<std::uint32_t>& answers, bool answers_as_hints) {
+  ncv::SearchCounters counters;
+  const auto start = std::chrono::steady_clock::now();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (answers_as_hints) {
+      search.set_hint(answers[i]);
+    } else if (i % 512 == 0) {
+      search.forget_hint();
+    }
+    search.closest(points[i], counters);
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return seconds / static_cast<double>(points.size());
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -139,5 +166,13 @@ int main(int argc, char** argv) {
   std::printf("the same with each sample's closest triangle as the hint:\n");
   print("distance class", hinted.by_distance, points.size());
   print("surface, hint", hinted.by_hint, points.size());
+  constexpr int kRounds = 5;
+  std::vector<double> normal, perfect;
+  for (int round = 0; round < kRounds; ++round) {
+    normal.push_back(whole_pass(search, points, answers, false));
+    perfect.push_back(whole_pass(search, points, answers, true));
+  }
+  std::printf("whole passes, median of %d: %.1f ns/sample; with a perfect hint %.1f\n", kRounds,
+              1e9 * median(normal), 1e9 * median(perfect));
   return 0;
 }
