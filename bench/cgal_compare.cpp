@@ -12,7 +12,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <functional>
 #include <vector>
 
@@ -61,15 +60,9 @@ std::size_t differing(const std::vector<double>& a, const std::vector<double>& b
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 3) {
-    std::fprintf(stderr, "usage: %s WORKPIECE NOMINAL [STEP_FRACTION]\n", argv[0]);
-    return 2;
-  }
-  const double fraction = argc > 3 ? std::atof(argv[3]) : 0.001;
-  ncv::bench::Workload w = ncv::bench::load_workload(argv[1], argv[2], fraction);
+  ncv::bench::Workload w = ncv::bench::load_local_workload(argc, argv);
   const ncv::NominalSurface& nominal = *w.nominal;
-  std::vector<ncv::Vec3>& points = w.points;
-  for (ncv::Vec3& p : points) p = nominal.to_local(p);
+  const std::vector<ncv::Vec3>& points = w.points;
   const double scale = std::max(max_abs(w.grid.bounds().min), max_abs(w.grid.bounds().max));
 
   std::vector<Triangle> triangles;

@@ -19,7 +19,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -144,15 +143,9 @@ double median(std::vector<double> values) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 3) {
-    std::fprintf(stderr, "usage: %s WORKPIECE NOMINAL [STEP_FRACTION]\n", argv[0]);
-    return 2;
-  }
-  const double fraction = argc > 3 ? std::atof(argv[3]) : 0.001;
-  ncv::bench::Workload w = ncv::bench::load_workload(argv[1], argv[2], fraction);
+  ncv::bench::Workload w = ncv::bench::load_local_workload(argc, argv);
   const ncv::NominalSurface& nominal = *w.nominal;
-  std::vector<ncv::Vec3>& points = w.points;
-  for (ncv::Vec3& p : points) p = nominal.to_local(p);
+  const std::vector<ncv::Vec3>& points = w.points;
 
   const ncv::SearchGrid search_grid(nominal.corners(), w.grid);
   ncv::GridSearch search(search_grid);

@@ -2,6 +2,8 @@
 // a fraction of its diagonal (0.1 %, the paper's δ, by default) against a nominal's grid.
 #pragma once
 
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -15,7 +17,7 @@ namespace ncv::bench {
 struct Workload {
   std::unique_ptr<NominalSurface> nominal;
   UniformGrid grid;
-  std::vector<Vec3> points;  // the samples, in the global frame
+  std::vector<Vec3> points;  // the samples, global frame (load_workload) or local
 };
 
 inline Workload load_workload(const char* workpiece_path, const char* nominal_path,
@@ -26,6 +28,19 @@ inline Workload load_workload(const char* workpiece_path, const char* nominal_pa
   Mesh workpiece = read_mesh(workpiece_path);
   const double step = step_fraction * bounding_box(workpiece).diagonal();
   w.points = sample_mesh(std::move(workpiece), step, SamplingScheme::all).positions;
+  return w;
+}
+
+// The command-line tools' workload: WORKPIECE NOMINAL [STEP_FRACTION] from the arguments
+// (usage on standard error and exit status 2 when they are missing), with the samples moved
+// into the nominal's local frame, where its grid and the search live.
+inline Workload load_local_workload(int argc, char** argv) {
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: %s WORKPIECE NOMINAL [STEP_FRACTION]\n", argv[0]);
+    std::exit(2);
+  }
+  Workload w = load_workload(argv[1], argv[2], argc > 3 ? std::atof(argv[3]) : 0.001);
+  for (Vec3& p : w.points) p = w.nominal->to_local(p);
   return w;
 }
 
