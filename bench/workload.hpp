@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -31,17 +32,22 @@ inline Workload load_workload(const char* workpiece_path, const char* nominal_pa
   return w;
 }
 
-// The command-line tools' workload: WORKPIECE NOMINAL [STEP_FRACTION] from the arguments
-// (usage on standard error and exit status 2 when they are missing), with the samples moved
-// into the nominal's local frame, where its grid and the search live.
+// The command-line tools' workload: WORKPIECE NOMINAL [STEP_FRACTION] from the arguments,
+// with the samples moved into the nominal's local frame, where its grid and the search live.
+// Missing arguments or an unreadable mesh: one line on standard error and exit status 2.
 inline Workload load_local_workload(int argc, char** argv) {
   if (argc < 3) {
     std::fprintf(stderr, "usage: %s WORKPIECE NOMINAL [STEP_FRACTION]\n", argv[0]);
     std::exit(2);
   }
-  Workload w = load_workload(argv[1], argv[2], argc > 3 ? std::atof(argv[3]) : 0.001);
-  for (Vec3& p : w.points) p = w.nominal->to_local(p);
-  return w;
+  try {
+    Workload w = load_workload(argv[1], argv[2], argc > 3 ? std::atof(argv[3]) : 0.001);
+    for (Vec3& p : w.points) p = w.nominal->to_local(p);
+    return w;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: %s\n", argv[0], e.what());
+    std::exit(2);
+  }
 }
 
 }  // namespace ncv::bench
