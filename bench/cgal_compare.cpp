@@ -1,15 +1,14 @@
 // The distance search beside CGAL's AABB tree on the same samples, one thread:
 //   ncverify_cgal_compare WORKPIECE.stl NOMINAL.stl [STEP_FRACTION]
 // samples the workpiece (scheme I, default δ = 0.1 % of its diagonal) and finds every
-// sample's closest nominal point three ways: ncverify's grid search (the hint dropped every
-// 512 samples, as the distance step does), CGAL's `closest_point_and_primitive` from its
+// sample's closest nominal point three ways: ncverify's grid search (in the distance step's
+// order, the hint dropped every block of 512), CGAL's `closest_point_and_primitive` from its
 // default start (`accelerate_distance_queries`), and CGAL's with the previous sample's hit
 // as the hint. Closest points only: neither side computes a sign here. Prints the time per
 // sample of each (median of 3 passes) and how many squared distances differ by more than
 // 1e-9 of the coordinate scale (CGAL rounds its own way).
 // Built only where CGAL is installed (Debian: libcgal-dev; scripts/setup.sh does not).
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -22,6 +21,7 @@
 
 #include "closest_point_search.hpp"
 #include "search_grid.hpp"
+#include "stopwatch.hpp"
 #include "workload.hpp"
 
 namespace {
@@ -40,13 +40,11 @@ double time_per_sample(const std::function<void(std::vector<double>&)>& pass,
                        std::vector<double>& squared) {
   std::vector<double> times;
   for (int round = 0; round < 3; ++round) {
-    const auto start = std::chrono::steady_clock::now();
+    const ncv::Stopwatch clock;
     pass(squared);
-    times.push_back(
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    times.push_back(clock.seconds());
   }
-  std::sort(times.begin(), times.end());
-  return times[1] / static_cast<double>(squared.size());
+  return ncv::bench::median(times) / static_cast<double>(squared.size());
 }
 
 std::size_t differing(const std::vector<double>& a, const std::vector<double>& b, double scale) {
@@ -70,12 +68,11 @@ int main(int argc, char** argv) {
   for (const ncv::TriangleCorners& c : nominal.corners()) {
     triangles.emplace_back(point(c[0]), point(c[1]), point(c[2]));
   }
-  const auto build_start = std::chrono::steady_clock::now();
+  const ncv::Stopwatch build_clock;
   Tree tree(triangles.begin(), triangles.end());
   tree.build();
   tree.accelerate_distance_queries();
-  const double build_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
+  const double build_seconds = build_clock.seconds();
 
   const ncv::SearchGrid search_grid(nominal.corners(), w.grid);
   ncv::GridSearch search(search_grid);
@@ -83,11 +80,9 @@ int main(int argc, char** argv) {
       hinted_squared(points.size());
   const double grid_time = time_per_sample(
       [&](std::vector<double>& squared) {
-        ncv::SearchCounters counters;
-        for (std::size_t i = 0; i < points.size(); ++i) {
-          if (i % 512 == 0) search.forget_hint();
-          squared[i] = search.closest(points[i], counters).squared_distance;
-        }
+        ncv::bench::search_in_step_order(
+            search, points,
+            [&](std::size_t i, const ncv::ClosestHit& hit) { squared[i] = hit.squared_distance; });
       },
       grid_squared);
   const double default_time = time_per_sample(

@@ -1,7 +1,7 @@
 // Where the distance search spends its time, by how far samples lie from the nominal:
 //   ncverify_search_profile WORKPIECE.stl NOMINAL.stl [STEP_FRACTION]
 // samples the workpiece (scheme I, default δ = 0.1 % of its diagonal), searches every sample
-// on one thread in order (as the distance step does, the hint dropped every 512 samples)
+// on one thread in order (as the distance step does, the hint dropped every block of 512)
 // and prints, per class of distance to the nominal, the share of samples, the cells read,
 // the cell-list entries box-checked and the exact tests per sample, and the wall time per
 // sample (two clock reads included, some 40 ns).
@@ -15,14 +15,13 @@
 // floor with a perfect hint.
 // scripts/bench.sh runs it on the 17 k and the 1.7 M nominal: the classes show what the
 // nominal's size changes.
-#include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <vector>
 
 #include "closest_point_search.hpp"
 #include "search_grid.hpp"
+#include "stopwatch.hpp"
 #include "workload.hpp"
 
 namespace {
@@ -88,19 +87,18 @@ Profile profile(ncv::GridSearch& search, const std::vector<ncv::Vec3>& points,
                 std::vector<std::uint32_t>& answers, bool answers_as_hints) {
   Profile result{distance_classes(), hint_classes()};
   ncv::SearchCounters counters;
-  using Clock = std::chrono::steady_clock;
   std::uint32_t previous = ncv::kNoTriangle;
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (answers_as_hints) {
       search.set_hint(answers[i]);
-    } else if (i % 512 == 0) {
+    } else if (i % ncv::kDistanceBlockSize == 0) {
       search.forget_hint();
       previous = ncv::kNoTriangle;
     }
     const ncv::SearchCounters before = counters;
-    const Clock::time_point start = Clock::now();
+    const ncv::Stopwatch clock;
     const ncv::ClosestHit hit = search.closest(points[i], counters);
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const double seconds = clock.seconds();
     answers[i] = hit.triangle;
     const double distance = std::sqrt(hit.squared_distance);
     for (SampleClass& c : result.by_distance) {
@@ -119,24 +117,17 @@ Profile profile(ncv::GridSearch& search, const std::vector<ncv::Vec3>& points,
 // One pass timed as a whole, in seconds per sample.
 double whole_pass(ncv::GridSearch& search, const std::vector<ncv::Vec3>& points,
                   const std::vector<std::uint32_t>& answers, bool answers_as_hints) {
-  ncv::SearchCounters counters;
-  const auto start = std::chrono::steady_clock::now();
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (answers_as_hints) {
+  const ncv::Stopwatch clock;
+  if (answers_as_hints) {
+    ncv::SearchCounters counters;
+    for (std::size_t i = 0; i < points.size(); ++i) {
       search.set_hint(answers[i]);
-    } else if (i % 512 == 0) {
-      search.forget_hint();
+      search.closest(points[i], counters);
     }
-    search.closest(points[i], counters);
+  } else {
+    ncv::bench::search_in_step_order(search, points, [](std::size_t, const ncv::ClosestHit&) {});
   }
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return seconds / static_cast<double>(points.size());
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
+  return clock.seconds() / static_cast<double>(points.size());
 }
 
 }  // namespace
@@ -165,6 +156,6 @@ int main(int argc, char** argv) {
     perfect.push_back(whole_pass(search, points, answers, true));
   }
   std::printf("whole passes, median of %d: %.1f ns/sample; with a perfect hint %.1f\n", kRounds,
-              1e9 * median(normal), 1e9 * median(perfect));
+              1e9 * ncv::bench::median(normal), 1e9 * ncv::bench::median(perfect));
   return 0;
 }

@@ -1,7 +1,9 @@
 // The paper-scale workload the benchmark programs measure: a workpiece sampled (scheme I) at
-// a fraction of its diagonal (0.1 %, the paper's δ, by default) against a nominal's grid.
+// a fraction of its diagonal (0.1 %, the paper's δ, by default) against a nominal's grid;
+// and the helpers the search tools share.
 #pragma once
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -9,9 +11,11 @@
 #include <utility>
 #include <vector>
 
+#include "closest_point_search.hpp"
 #include "grid_builder.hpp"
 #include "mesh_reader.hpp"
 #include "sampling.hpp"
+#include "signed_distance.hpp"
 
 namespace ncv::bench {
 
@@ -48,6 +52,22 @@ inline Workload load_local_workload(int argc, char** argv) {
     std::fprintf(stderr, "%s: %s\n", argv[0], e.what());
     std::exit(2);
   }
+}
+
+// Searches every point in turn as the distance step does, the hint dropped at the start of
+// each block; on_hit(i, hit) receives each result.
+template <class OnHit>
+void search_in_step_order(GridSearch& search, const std::vector<Vec3>& points, OnHit&& on_hit) {
+  SearchCounters counters;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (i % kDistanceBlockSize == 0) search.forget_hint();
+    on_hit(i, search.closest(points[i], counters));
+  }
+}
+
+inline double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
 }
 
 }  // namespace ncv::bench

@@ -19,10 +19,6 @@
 namespace ncv {
 namespace {
 
-// Points are measured in fixed blocks of kBlockSize (the last one shorter); each block
-// starts without a search hint, so the counters do not depend on the thread count.
-constexpr std::size_t kBlockSize = 512;
-
 void check_inputs(std::span<const Vec3> points, std::span<const Vec3> sample_normals,
                   SignMethod method) {
   // The first bad point, found in parallel (the lowest index, whatever the thread count).
@@ -70,7 +66,7 @@ class SignedDistanceJob {
     Worker& worker = workers_.local();
     if (grid_ && !worker.search) worker.search.emplace(*grid_);
     for (std::size_t i = begin; i < end; ++i) {
-      if (worker.search && i % kBlockSize == 0) worker.search->forget_hint();
+      if (worker.search && i % kDistanceBlockSize == 0) worker.search->forget_hint();
       const Vec3 p = nominal_.to_local(points_[i]);
       const ClosestHit hit = worker.search
                                  ? worker.search->closest(p, worker.counters)
@@ -150,11 +146,11 @@ DistanceField compute_signed_distances(const NominalSurface& nominal, const Sear
                         resolve_sign_method(nominal, method));
   const std::thread::id caller = std::this_thread::get_id();
   std::atomic<std::size_t> done{0};
-  const std::size_t blocks = (n + kBlockSize - 1) / kBlockSize;
+  const std::size_t blocks = (n + kDistanceBlockSize - 1) / kDistanceBlockSize;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks),
                     [&](const tbb::blocked_range<std::size_t>& range) {
-                      const std::size_t begin = range.begin() * kBlockSize;
-                      const std::size_t end = std::min(n, range.end() * kBlockSize);
+                      const std::size_t begin = range.begin() * kDistanceBlockSize;
+                      const std::size_t end = std::min(n, range.end() * kDistanceBlockSize);
                       job.run(field, begin, end);
                       const std::size_t finished = done += end - begin;
                       if (progress && std::this_thread::get_id() == caller) progress(finished, n);

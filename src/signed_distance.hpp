@@ -33,6 +33,10 @@
 
 namespace ncv {
 
+// Points are measured in fixed blocks of this many (the last one shorter); each block starts
+// without a search hint, so the counters do not depend on the thread count.
+inline constexpr std::size_t kDistanceBlockSize = 512;
+
 // Buffers: filled by the parallel loop without a serial zeroing pass first (buffer.hpp).
 struct DistanceField {
   Buffer<double> distance;     // signed
