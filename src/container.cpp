@@ -171,7 +171,7 @@ Container Container::read(const std::string& path, FileKind kind, std::uint32_t 
 }
 
 Container Container::read_any(const std::string& path) {
-  Buffer<char> bytes = read_input_bytes(path);
+  InputBytes bytes = read_input_bytes(path);
   FileKind kind = FileKind::samples;
   if (bytes.size() >= 12) {
     for (FileKind candidate : kAllKinds) {
@@ -181,7 +181,7 @@ Container Container::read_any(const std::string& path) {
   return parse(std::move(bytes), input_name(path), kind, format_version(kind));
 }
 
-Container Container::parse(Buffer<char> bytes, const std::string& source, FileKind kind,
+Container Container::parse(InputBytes bytes, const std::string& source, FileKind kind,
                            std::uint32_t version) {
   Container c;
   c.source_ = source;

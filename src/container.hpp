@@ -24,6 +24,7 @@
 
 #include "buffer.hpp"
 #include "error.hpp"
+#include "input_bytes.hpp"
 #include "output_file.hpp"
 
 namespace ncv {
@@ -87,7 +88,7 @@ class ContainerWriter {
 // A parsed, verified container: magic, kind, version, sizes and content hash all checked.
 class Container {
  public:
-  static Container parse(Buffer<char> bytes, const std::string& source, FileKind kind,
+  static Container parse(InputBytes bytes, const std::string& source, FileKind kind,
                          std::uint32_t version);
   static Container read(const std::string& path, FileKind kind, std::uint32_t version);
   // Reads any kind, in its current version (for inspect).
@@ -135,7 +136,7 @@ class Container {
   std::string source_;
   FileKind kind_{};
   std::uint32_t version_ = 0;
-  Buffer<char> bytes_;
+  InputBytes bytes_;
   nlohmann::json meta_;
   std::vector<SectionEntry> sections_;
 };

@@ -1,11 +1,13 @@
 #include "input_bytes.hpp"
 
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
+#include <utility>
 
 #include "error.hpp"
 
@@ -27,13 +29,67 @@ class FileDescriptor {
   bool owned_;
 };
 
+// Everything left in fd, into a buffer. A regular file's size is known and real: one
+// buffer of that size, plus a byte so that reaching the end needs no reallocation (each one
+// copies everything read so far). Streams grow as data arrives and give back the excess
+// at the end. The buffer is not zero-filled before read() fills it.
+Buffer<char> read_all(int fd, const std::string& name, std::size_t expected) {
+  Buffer<char> bytes(expected > 0 ? expected + 1 : std::size_t{1} << 16);
+  std::size_t used = 0;
+  for (;;) {
+    if (used == bytes.size()) bytes.resize(2 * bytes.size());
+    const ssize_t got = ::read(fd, bytes.data() + used, bytes.size() - used);
+    if (got < 0) {
+      if (errno == EINTR) continue;
+      throw InputError(name, std::string("read error: ") + std::strerror(errno));
+    }
+    if (got == 0) break;
+    used += static_cast<std::size_t>(got);
+  }
+  bytes.resize(used);
+  if (expected == 0) bytes.shrink_to_fit();
+  return bytes;
+}
+
 }  // namespace
 
 std::string input_name(const std::string& path) {
   return path == "-" ? "standard input" : path;
 }
 
-Buffer<char> read_input_bytes(const std::string& path) {
+InputBytes::InputBytes(Buffer<char> bytes) : owned_(std::move(bytes)) {
+  data_ = owned_.data();
+  size_ = owned_.size();
+}
+
+InputBytes::~InputBytes() {
+  release();
+}
+
+InputBytes::InputBytes(InputBytes&& other) noexcept {
+  *this = std::move(other);
+}
+
+InputBytes& InputBytes::operator=(InputBytes&& other) noexcept {
+  if (this == &other) return *this;
+  release();
+  owned_ = std::move(other.owned_);
+  mapping_ = std::exchange(other.mapping_, nullptr);
+  data_ = mapping_ ? static_cast<const char*>(mapping_) : owned_.data();
+  size_ = std::exchange(other.size_, 0);
+  other.data_ = nullptr;
+  return *this;
+}
+
+void InputBytes::release() noexcept {
+  if (mapping_) ::munmap(mapping_, size_);
+  mapping_ = nullptr;
+  owned_ = Buffer<char>();
+  data_ = nullptr;
+  size_ = 0;
+}
+
+InputBytes InputBytes::read(const std::string& path) {
   const std::string name = input_name(path);
   const bool from_stdin = path == "-";
   FileDescriptor fd(from_stdin ? STDIN_FILENO : ::open(path.c_str(), O_RDONLY | O_CLOEXEC),
@@ -43,25 +99,22 @@ Buffer<char> read_input_bytes(const std::string& path) {
   if (::fstat(fd.get(), &info) != 0) throw InputError(name, std::strerror(errno));
   if (S_ISDIR(info.st_mode)) throw InputError(name, "is a directory, not a file");
 
-  // A regular file's size is known and real: one buffer of that size, plus a byte so that
-  // reaching the end needs no reallocation (each one copies everything read so far).
-  // Streams grow as data arrives and give back the excess at the end.
-  const bool sized = S_ISREG(info.st_mode);
-  Buffer<char> bytes(sized ? static_cast<std::size_t>(info.st_size) + 1 : std::size_t{1} << 16);
-  std::size_t used = 0;
-  for (;;) {
-    if (used == bytes.size()) bytes.resize(2 * bytes.size());
-    const ssize_t got = ::read(fd.get(), bytes.data() + used, bytes.size() - used);
-    if (got < 0) {
-      if (errno == EINTR) continue;
-      throw InputError(name, std::string("read error: ") + std::strerror(errno));
+  const bool regular = S_ISREG(info.st_mode);
+  const auto file_size = static_cast<std::size_t>(regular ? info.st_size : 0);
+  // Standard input is read even when it is a regular file: "-" may have been read from
+  // already, and mapping would ignore the file position.
+  if (regular && !from_stdin && file_size > 0) {
+    void* mapping = ::mmap(nullptr, file_size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd.get(), 0);
+    if (mapping != MAP_FAILED) {
+      InputBytes bytes;
+      bytes.mapping_ = mapping;
+      bytes.data_ = static_cast<const char*>(mapping);
+      bytes.size_ = file_size;
+      return bytes;
     }
-    if (got == 0) break;
-    used += static_cast<std::size_t>(got);
+    // Some file systems cannot be mapped; reading works everywhere.
   }
-  bytes.resize(used);
-  if (!sized) bytes.shrink_to_fit();
-  return bytes;
+  return InputBytes(read_all(fd.get(), name, file_size));
 }
 
 }  // namespace ncv

@@ -148,8 +148,8 @@ Mesh parse_mesh(std::span<const char> bytes, const std::string& source, MeshRead
 }
 
 Mesh read_mesh(const std::string& path, MeshReadReport* report) {
-  const Buffer<char> bytes = read_input_bytes(path);
-  return parse_mesh(bytes, input_name(path), report);
+  const InputBytes bytes = read_input_bytes(path);
+  return parse_mesh(bytes.span(), input_name(path), report);
 }
 
 }  // namespace ncv

@@ -45,11 +45,25 @@ void unregister_pending(const std::string& path) {
   }
 }
 
-extern "C" void remove_pending_and_exit(int signal_number) {
+void remove_pending() {
   for (std::size_t slot = 0; slot < kMaxPending; ++slot) {
     if (pending_state[slot] == kPublished) ::unlink(pending_paths[slot].data());
   }
+}
+
+extern "C" void remove_pending_and_exit(int signal_number) {
+  remove_pending();
   ::_exit(128 + signal_number);
+}
+
+// SIGBUS on x86-64 and AArch64 Linux means a mapped input file (input_bytes.hpp) lost pages
+// under us: another program truncated it while it was being read. Bad input, not a crash.
+extern "C" void report_truncated_input_and_exit(int) {
+  static constexpr char kMessage[] =
+      "ncverify: error: an input file was truncated while it was being read\n";
+  [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, kMessage, sizeof kMessage - 1);
+  remove_pending();
+  ::_exit(2);
 }
 
 // Creates "PATH.tmp.PID.N", registered with the signal handler before it exists: a signal
@@ -82,6 +96,7 @@ void install_output_cleanup_on_signals() {
   std::signal(SIGINT, remove_pending_and_exit);
   std::signal(SIGTERM, remove_pending_and_exit);
   std::signal(SIGHUP, remove_pending_and_exit);
+  std::signal(SIGBUS, report_truncated_input_and_exit);
 }
 
 OutputFile::OutputFile(std::string path, OutputKind kind) : path_(std::move(path)) {

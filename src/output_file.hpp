@@ -39,8 +39,10 @@ class OutputFile {
   bool committed_ = false;
 };
 
-// Installs SIGINT/SIGTERM handlers that remove every pending temporary output, then exit
-// with 128 + signal. Call once at start-up.
+// Installs SIGINT/SIGTERM/SIGHUP handlers that remove every pending temporary output, then
+// exit with 128 + signal, and a SIGBUS handler (a mapped input truncated by another
+// program) that does the same after one error line, with exit status 2. Call once at
+// start-up.
 void install_output_cleanup_on_signals();
 
 }  // namespace ncv

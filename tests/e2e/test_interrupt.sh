@@ -56,4 +56,15 @@ interrupt "sample waiting on standard input, SIGINT" SIGINT 130 piped.samples pi
 interrupt "run at a tiny step, SIGINT" SIGINT 130 part/box.samples null \
   "$NCVERIFY" -q run box.stl box.stl -d part --step 0.006 --force
 check "run: no temporary left in its folder" test -z "$(compgen -G 'part/*.tmp.*')"
+
+# SIGBUS is what a mapped input (input_bytes.hpp) raises when another program truncates it
+# while it is read: bad input, so one error line and exit status 2, and no output left.
+# Sent here as the truncation would raise it (a real truncation is a race to time).
+got=$(/usr/bin/python3 send_signal.py SIGBUS big.samples null stderr.txt \
+  "$NCVERIFY" -q sample box.stl -o big.samples --step 0.006 --force)
+check "SIGBUS: exit status $got is 2" test "$got" = 2
+check "SIGBUS: no output nor temporary left" test -z "$(compgen -G 'big.samples*')"
+check "SIGBUS: one line on stderr" test "$(wc -l <stderr.txt)" = 1
+check "SIGBUS: the line says an input was truncated" \
+  grep -q "^ncverify: error: an input file was truncated" stderr.txt
 finish

@@ -38,8 +38,8 @@ fs::path write_example(const SampleSet& set, const std::string& name) {
 }
 
 std::vector<char> bytes_of(const fs::path& path) {
-  const ncv::Buffer<char> bytes = read_input_bytes(path.string());
-  return {bytes.begin(), bytes.end()};
+  const ncv::InputBytes bytes = ncv::read_input_bytes(path.string());
+  return {bytes.data(), bytes.data() + bytes.size()};
 }
 
 void write_bytes(const fs::path& path, const std::vector<char>& bytes) {

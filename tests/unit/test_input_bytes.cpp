@@ -1,0 +1,91 @@
+// InputBytes: a regular file mapped, anything else read, the same bytes either way.
+#include <catch2/catch.hpp>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+
+#include "error.hpp"
+#include "input_bytes.hpp"
+
+using namespace ncv;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch_file(const std::string& name, const std::string& content) {
+  const fs::path dir =
+      fs::temp_directory_path() / fs::path("ncverify-input-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path path = dir / name;
+  std::ofstream(path, std::ios::binary).write(content.data(), std::ssize(content));
+  return path;
+}
+
+std::string text_of(const InputBytes& bytes) {
+  return {bytes.data(), bytes.size()};
+}
+
+// Every byte value, and more than a page, so that a mapping spans several pages.
+std::string varied_content() {
+  std::string content;
+  for (int k = 0; k < 3 * 4096 + 17; ++k) content.push_back(static_cast<char>(k * 7 % 256));
+  return content;
+}
+
+}  // namespace
+
+TEST_CASE("a regular file is read whole, byte for byte") {
+  const std::string content = varied_content();
+  const InputBytes bytes = read_input_bytes(scratch_file("varied.bin", content).string());
+  CHECK(bytes.size() == content.size());
+  CHECK(text_of(bytes) == content);
+  CHECK(bytes.span().size() == content.size());
+}
+
+TEST_CASE("an empty file gives no bytes") {
+  const InputBytes bytes = read_input_bytes(scratch_file("empty.bin", "").string());
+  CHECK(bytes.size() == 0);
+}
+
+TEST_CASE("a pipe is read to its end") {
+  // A FIFO is not a regular file: it cannot be mapped and has no size ahead of its data.
+  const fs::path fifo = scratch_file("unused", "").parent_path() / "fifo";
+  fs::remove(fifo);
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  const std::string content = varied_content() + varied_content();
+  std::thread writer([&] { std::ofstream(fifo, std::ios::binary) << content; });
+  const InputBytes bytes = read_input_bytes(fifo.string());
+  writer.join();
+  CHECK(text_of(bytes) == content);
+  fs::remove(fifo);
+}
+
+TEST_CASE("a file the kernel reports as empty is still read to its end") {
+  // /proc files are regular with st_size 0; a mapping of 0 bytes would lose their content.
+  const InputBytes bytes = read_input_bytes("/proc/self/status");
+  CHECK(text_of(bytes).find("Pid:") != std::string::npos);
+}
+
+TEST_CASE("bytes move with their owner, mapped or not") {
+  const std::string content = varied_content();
+  InputBytes mapped = read_input_bytes(scratch_file("moved.bin", content).string());
+  InputBytes moved = std::move(mapped);
+  CHECK(mapped.size() == 0);  // NOLINT(bugprone-use-after-move): the moved-from state is empty
+  CHECK(text_of(moved) == content);
+
+  Buffer<char> buffer(content.begin(), content.end());
+  InputBytes owned(std::move(buffer));
+  moved = std::move(owned);
+  CHECK(text_of(moved) == content);
+}
+
+TEST_CASE("missing files and folders are input errors") {
+  const fs::path missing = scratch_file("unused", "").parent_path() / "no-such-file";
+  CHECK_THROWS_AS(read_input_bytes(missing.string()), InputError);
+  CHECK_THROWS_AS(read_input_bytes(missing.parent_path().string()), InputError);
+}
