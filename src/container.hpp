@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "buffer.hpp"
@@ -107,6 +108,16 @@ class Container {
   Vector get(const std::string& name, std::uint64_t rows, std::uint64_t columns = 1) const {
     Vector out(checked_count(name, dtype_of<T>(), rows, columns));
     copy_section(name, out.data(), out.size() * sizeof(T));
+    return out;
+  }
+  // The same for a section of rows × sizeof(Row) / sizeof(T) elements, copied straight into
+  // `rows` Rows (points as Vec3, triangles as Triangle): one copy, no flat array between.
+  template <class T, class Row, class Vector = std::vector<Row>>
+  Vector get_rows(const std::string& name, std::uint64_t rows) const {
+    static_assert(std::is_trivially_copyable_v<Row> && sizeof(Row) % sizeof(T) == 0);
+    constexpr std::uint64_t columns = sizeof(Row) / sizeof(T);
+    Vector out(checked_count(name, dtype_of<T>(), rows, columns) / columns);
+    copy_section(name, out.data(), out.size() * sizeof(Row));
     return out;
   }
   // Raw access for generic tools (inspect): the bytes are little-endian `dtype` values.

@@ -82,7 +82,7 @@ DistanceSet load_distance_set(const Container& c) {
   set.triangles_tested_per_sample = c.field("/distance/triangles_tested_per_sample").get<double>();
 
   set.field.distance = c.get<double, Buffer<double>>("distance", S);
-  set.field.closest_point = to_points<Buffer<Vec3>>(c.get<double>("closest_point", S, 3));
+  set.field.closest_point = c.get_rows<double, Vec3, Buffer<Vec3>>("closest_point", S);
   set.field.closest_face = c.get<std::uint32_t, Buffer<std::uint32_t>>("closest_face", S);
   for (std::uint64_t s = 0; s < S; ++s) {
     if (!std::isfinite(set.field.distance[s]) || !is_finite(set.field.closest_point[s])) {

@@ -84,8 +84,8 @@ NominalGrid read_grid_file(const std::string& path) {
 NominalGrid load_nominal_grid(const Container& c) {
   NominalGrid g;
   const std::uint64_t V = c.count("/nominal/vertices"), T = c.count("/nominal/triangles");
-  g.mesh.vertices = to_points(c.get<double>("nominal_vertices", V, 3));
-  g.mesh.triangles = to_triangles(c.get<std::uint32_t>("nominal_triangles", T, 3));
+  g.mesh.vertices = c.get_rows<double, Vec3>("nominal_vertices", V);
+  g.mesh.triangles = c.get_rows<std::uint32_t, Triangle>("nominal_triangles", T);
   if (!c.field("/nominal/hash").is_string()) c.fail("nominal hash is malformed");
   g.nominal_hash = parse_hash_hex(c.field("/nominal/hash").get<std::string>(), c);
   if (mesh_hash(g.mesh) != g.nominal_hash) c.fail("nominal mesh hash does not match");

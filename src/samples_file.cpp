@@ -110,8 +110,8 @@ SampleSet load_sample_set(const Container& c) {
   SampleSet set;
   const std::uint64_t V = c.count("/workpiece/vertices"), T = c.count("/workpiece/triangles"),
                       S = c.count("/sampling/samples");
-  set.workpiece.vertices = to_points(c.get<double>("workpiece_vertices", V, 3));
-  set.workpiece.triangles = to_triangles(c.get<std::uint32_t>("workpiece_triangles", T, 3));
+  set.workpiece.vertices = c.get_rows<double, Vec3>("workpiece_vertices", V);
+  set.workpiece.triangles = c.get_rows<std::uint32_t, Triangle>("workpiece_triangles", T);
   validate_mesh(set.workpiece, c);
   if (!c.field("/workpiece/source").is_string()) c.fail("workpiece source is malformed");
   set.workpiece_source = c.field("/workpiece/source").get<std::string>();
@@ -129,7 +129,7 @@ SampleSet load_sample_set(const Container& c) {
   set.tri_n = c.get<std::uint32_t>("tri_n", T);
   set.tri_first = c.get<std::uint64_t>("tri_first", T);
   set.vertex_sample = c.get<std::uint32_t>("vertex_sample", V);
-  set.positions = to_points(c.get<double>("positions", S, 3));
+  set.positions = c.get_rows<double, Vec3>("positions", S);
   set.owner = c.get<std::uint32_t>("owner", S);
   set.lattice_i = c.get<std::uint32_t>("lattice_i", S);
   set.lattice_j = c.get<std::uint32_t>("lattice_j", S);
