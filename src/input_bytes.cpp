@@ -89,7 +89,7 @@ void InputBytes::release() noexcept {
   size_ = 0;
 }
 
-InputBytes InputBytes::read(const std::string& path) {
+InputBytes read_input_bytes(const std::string& path) {
   const std::string name = input_name(path);
   const bool from_stdin = path == "-";
   FileDescriptor fd(from_stdin ? STDIN_FILENO : ::open(path.c_str(), O_RDONLY | O_CLOEXEC),

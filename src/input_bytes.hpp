@@ -15,7 +15,8 @@ std::string input_name(const std::string& path);
 // A whole input's bytes, read-only. A regular file is mapped: its pages are the page
 // cache's own, so reading the 140 MB distance file of the paper's finishing part costs no
 // copy and no fresh memory for the kernel to zero (2 ms instead of 20-100 ms). Standard
-// input, pipes and devices are read into a buffer. Move-only.
+// input, pipes, devices and files the kernel gives no size (/proc) are read into a buffer.
+// Move-only.
 //
 // A mapped file that another program truncates while it is mapped would raise SIGBUS on
 // the next access to the lost pages; install_output_cleanup_on_signals() turns that into
@@ -23,8 +24,9 @@ std::string input_name(const std::string& path);
 class InputBytes {
  public:
   InputBytes() = default;
-  // Bytes already in memory (tests, fuzz targets).
-  InputBytes(Buffer<char> bytes);  // NOLINT(google-explicit-constructor): a buffer is bytes
+  // Bytes already in memory (tests, fuzz targets); implicit, so that a buffer can be passed
+  // wherever input bytes are expected.
+  InputBytes(Buffer<char> bytes);
   ~InputBytes();
   InputBytes(InputBytes&& other) noexcept;
   InputBytes& operator=(InputBytes&& other) noexcept;
@@ -35,12 +37,8 @@ class InputBytes {
   std::size_t size() const { return size_; }
   std::span<const char> span() const { return {data_, size_}; }
 
-  // Reads everything; memory grows only with the bytes actually present, so no header
-  // count can make it allocate more. Throws InputError (missing file, directory, read
-  // error).
-  static InputBytes read(const std::string& path);
-
  private:
+  friend InputBytes read_input_bytes(const std::string& path);
   void release() noexcept;
 
   Buffer<char> owned_;
@@ -49,8 +47,8 @@ class InputBytes {
   std::size_t size_ = 0;
 };
 
-inline InputBytes read_input_bytes(const std::string& path) {
-  return InputBytes::read(path);
-}
+// Reads everything; memory grows only with the bytes actually present, so no header count
+// can make it allocate more. Throws InputError (missing file, directory, read error).
+InputBytes read_input_bytes(const std::string& path);
 
 }  // namespace ncv

@@ -75,7 +75,7 @@ TEST_CASE("bytes move with their owner, mapped or not") {
   const std::string content = varied_content();
   InputBytes mapped = read_input_bytes(scratch_file("moved.bin", content).string());
   InputBytes moved = std::move(mapped);
-  CHECK(mapped.size() == 0);  // NOLINT(bugprone-use-after-move): the moved-from state is empty
+  CHECK(mapped.size() == 0);  // a moved-from InputBytes is empty
   CHECK(text_of(moved) == content);
 
   Buffer<char> buffer(content.begin(), content.end());
