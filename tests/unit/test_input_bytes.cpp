@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <system_error>
 #include <thread>
 
 #include "error.hpp"
@@ -17,14 +18,32 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch_file(const std::string& name, const std::string& content) {
-  const fs::path dir =
-      fs::temp_directory_path() / fs::path("ncverify-input-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path path = dir / name;
-  std::ofstream(path, std::ios::binary).write(content.data(), std::ssize(content));
-  return path;
-}
+// A folder of the test's own, removed with its files when the test ends.
+class ScratchDir {
+ public:
+  ScratchDir()
+      : path_(fs::temp_directory_path() /
+              ("ncverify-input-" + std::to_string(::getpid()) + "-" + std::to_string(next_++))) {
+    fs::create_directories(path_);
+  }
+  ~ScratchDir() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+
+  fs::path file(const std::string& name, const std::string& content) const {
+    const fs::path path = path_ / name;
+    std::ofstream(path, std::ios::binary).write(content.data(), std::ssize(content));
+    return path;
+  }
+  const fs::path& path() const { return path_; }
+
+ private:
+  static inline int next_ = 0;
+  fs::path path_;
+};
 
 std::string text_of(const InputBytes& bytes) {
   return {bytes.data(), bytes.size()};
@@ -40,29 +59,30 @@ std::string varied_content() {
 }  // namespace
 
 TEST_CASE("a regular file is read whole, byte for byte") {
+  const ScratchDir dir;
   const std::string content = varied_content();
-  const InputBytes bytes = read_input_bytes(scratch_file("varied.bin", content).string());
+  const InputBytes bytes = read_input_bytes(dir.file("varied.bin", content).string());
   CHECK(bytes.size() == content.size());
   CHECK(text_of(bytes) == content);
   CHECK(bytes.span().size() == content.size());
 }
 
 TEST_CASE("an empty file gives no bytes") {
-  const InputBytes bytes = read_input_bytes(scratch_file("empty.bin", "").string());
+  const ScratchDir dir;
+  const InputBytes bytes = read_input_bytes(dir.file("empty.bin", "").string());
   CHECK(bytes.size() == 0);
 }
 
 TEST_CASE("a pipe is read to its end") {
   // A FIFO is not a regular file: it cannot be mapped and has no size ahead of its data.
-  const fs::path fifo = scratch_file("unused", "").parent_path() / "fifo";
-  fs::remove(fifo);
+  const ScratchDir dir;
+  const fs::path fifo = dir.path() / "fifo";
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
   const std::string content = varied_content() + varied_content();
   std::thread writer([&] { std::ofstream(fifo, std::ios::binary) << content; });
   const InputBytes bytes = read_input_bytes(fifo.string());
   writer.join();
   CHECK(text_of(bytes) == content);
-  fs::remove(fifo);
 }
 
 TEST_CASE("a file the kernel reports as empty is still read to its end") {
@@ -72,8 +92,9 @@ TEST_CASE("a file the kernel reports as empty is still read to its end") {
 }
 
 TEST_CASE("bytes move with their owner, mapped or not") {
+  const ScratchDir dir;
   const std::string content = varied_content();
-  InputBytes mapped = read_input_bytes(scratch_file("moved.bin", content).string());
+  InputBytes mapped = read_input_bytes(dir.file("moved.bin", content).string());
   InputBytes moved = std::move(mapped);
   CHECK(mapped.size() == 0);  // a moved-from InputBytes is empty
   CHECK(text_of(moved) == content);
@@ -85,7 +106,7 @@ TEST_CASE("bytes move with their owner, mapped or not") {
 }
 
 TEST_CASE("missing files and folders are input errors") {
-  const fs::path missing = scratch_file("unused", "").parent_path() / "no-such-file";
-  CHECK_THROWS_AS(read_input_bytes(missing.string()), InputError);
-  CHECK_THROWS_AS(read_input_bytes(missing.parent_path().string()), InputError);
+  const ScratchDir dir;
+  CHECK_THROWS_AS(read_input_bytes((dir.path() / "no-such-file").string()), InputError);
+  CHECK_THROWS_AS(read_input_bytes(dir.path().string()), InputError);
 }
