@@ -102,13 +102,11 @@ class Container {
   std::uint64_t file_bytes() const { return bytes_.size(); }
 
   bool has(const std::string& name) const;
-  // Copies section `name`, checking its dtype and that it holds rows × columns elements,
-  // into a std::vector<T> or a Buffer<T>.
+  // Copies section `name`, checking its dtype and that it holds `rows` values, into a
+  // std::vector<T> or a Buffer<T>.
   template <class T, class Vector = std::vector<T>>
-  Vector get(const std::string& name, std::uint64_t rows, std::uint64_t columns = 1) const {
-    Vector out(checked_count(name, dtype_of<T>(), rows, columns));
-    copy_section(name, out.data(), out.size() * sizeof(T));
-    return out;
+  Vector get(const std::string& name, std::uint64_t rows) const {
+    return get_rows<T, T, Vector>(name, rows);
   }
   // The same for a section of rows × sizeof(Row) / sizeof(T) elements, copied straight into
   // `rows` Rows (points as Vec3, triangles as Triangle): one copy, no flat array between.

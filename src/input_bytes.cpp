@@ -57,36 +57,30 @@ std::string input_name(const std::string& path) {
   return path == "-" ? "standard input" : path;
 }
 
-InputBytes::InputBytes(Buffer<char> bytes) : owned_(std::move(bytes)) {
-  data_ = owned_.data();
-  size_ = owned_.size();
-}
+InputBytes::InputBytes(Buffer<char> bytes) : owned_(std::move(bytes)) {}
 
 InputBytes::~InputBytes() {
-  release();
+  unmap();
 }
 
-InputBytes::InputBytes(InputBytes&& other) noexcept {
-  *this = std::move(other);
-}
+InputBytes::InputBytes(InputBytes&& other) noexcept
+    : owned_(std::move(other.owned_)),
+      mapping_(std::exchange(other.mapping_, nullptr)),
+      mapped_bytes_(std::exchange(other.mapped_bytes_, 0)) {}
 
 InputBytes& InputBytes::operator=(InputBytes&& other) noexcept {
   if (this == &other) return *this;
-  release();
+  unmap();
   owned_ = std::move(other.owned_);
   mapping_ = std::exchange(other.mapping_, nullptr);
-  data_ = mapping_ ? static_cast<const char*>(mapping_) : owned_.data();
-  size_ = std::exchange(other.size_, 0);
-  other.data_ = nullptr;
+  mapped_bytes_ = std::exchange(other.mapped_bytes_, 0);
   return *this;
 }
 
-void InputBytes::release() noexcept {
-  if (mapping_) ::munmap(mapping_, size_);
+void InputBytes::unmap() noexcept {
+  if (mapping_) ::munmap(mapping_, mapped_bytes_);
   mapping_ = nullptr;
-  owned_ = Buffer<char>();
-  data_ = nullptr;
-  size_ = 0;
+  mapped_bytes_ = 0;
 }
 
 InputBytes read_input_bytes(const std::string& path) {
@@ -105,13 +99,7 @@ InputBytes read_input_bytes(const std::string& path) {
   // already, and mapping would ignore the file position.
   if (regular && !from_stdin && file_size > 0) {
     void* mapping = ::mmap(nullptr, file_size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd.get(), 0);
-    if (mapping != MAP_FAILED) {
-      InputBytes bytes;
-      bytes.mapping_ = mapping;
-      bytes.data_ = static_cast<const char*>(mapping);
-      bytes.size_ = file_size;
-      return bytes;
-    }
+    if (mapping != MAP_FAILED) return InputBytes(mapping, file_size);
     // Some file systems cannot be mapped; reading works everywhere.
   }
   return InputBytes(read_all(fd.get(), name, file_size));

@@ -33,18 +33,18 @@ class InputBytes {
   InputBytes(const InputBytes&) = delete;
   InputBytes& operator=(const InputBytes&) = delete;
 
-  const char* data() const { return data_; }
-  std::size_t size() const { return size_; }
-  std::span<const char> span() const { return {data_, size_}; }
+  const char* data() const { return mapping_ ? static_cast<const char*>(mapping_) : owned_.data(); }
+  std::size_t size() const { return mapping_ ? mapped_bytes_ : owned_.size(); }
+  std::span<const char> span() const { return {data(), size()}; }
 
  private:
   friend InputBytes read_input_bytes(const std::string& path);
-  void release() noexcept;
+  InputBytes(void* mapping, std::size_t bytes) : mapping_(mapping), mapped_bytes_(bytes) {}
+  void unmap() noexcept;
 
-  Buffer<char> owned_;
-  void* mapping_ = nullptr;  // set when the bytes are a mapped file
-  const char* data_ = nullptr;
-  std::size_t size_ = 0;
+  Buffer<char> owned_;       // the bytes, when they were read
+  void* mapping_ = nullptr;  // the bytes, when the file is mapped
+  std::size_t mapped_bytes_ = 0;
 };
 
 // Reads everything; memory grows only with the bytes actually present, so no header count

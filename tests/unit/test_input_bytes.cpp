@@ -12,38 +12,12 @@
 
 #include "error.hpp"
 #include "input_bytes.hpp"
+#include "scratch_dir.hpp"
 
 using namespace ncv;
 namespace fs = std::filesystem;
 
 namespace {
-
-// A folder of the test's own, removed with its files when the test ends.
-class ScratchDir {
- public:
-  ScratchDir()
-      : path_(fs::temp_directory_path() /
-              ("ncverify-input-" + std::to_string(::getpid()) + "-" + std::to_string(next_++))) {
-    fs::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-
-  fs::path file(const std::string& name, const std::string& content) const {
-    const fs::path path = path_ / name;
-    std::ofstream(path, std::ios::binary).write(content.data(), std::ssize(content));
-    return path;
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  static inline int next_ = 0;
-  fs::path path_;
-};
 
 std::string text_of(const InputBytes& bytes) {
   return {bytes.data(), bytes.size()};

@@ -7,18 +7,12 @@
 
 #include "input_bytes.hpp"
 #include "samples_file.hpp"
+#include "scratch_dir.hpp"
 
 using namespace ncv;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path scratch_dir() {
-  const fs::path dir =
-      fs::temp_directory_path() / fs::path("ncverify-test-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
 
 SampleSet example_set() {
   Mesh mesh{{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {0, 0, 4}, {9, 9, 9}, {9.01, 9, 9}, {9, 9.01, 9}},
@@ -29,8 +23,8 @@ SampleSet example_set() {
   return set;
 }
 
-fs::path write_example(const SampleSet& set, const std::string& name) {
-  const fs::path path = scratch_dir() / name;
+fs::path write_example(const ScratchDir& dir, const SampleSet& set, const std::string& name) {
+  const fs::path path = dir.path() / name;
   OutputFile out(path.string(), OutputKind::binary);
   write_samples_file(set, out);
   out.commit();
@@ -59,9 +53,10 @@ std::string refusal(const fs::path& path) {
 }  // namespace
 
 TEST_CASE("a samples file round-trips exactly", "[samples-file]") {
+  const ScratchDir dir;
   const SampleSet set = example_set();
   REQUIRE(set.tri_n[4] == 0);  // the tiny triangle is skipped in scheme II
-  const SampleSet back = read_samples_file(write_example(set, "round.samples").string());
+  const SampleSet back = read_samples_file(write_example(dir, set, "round.samples").string());
   CHECK(back.workpiece.vertices == set.workpiece.vertices);
   CHECK(back.workpiece.triangles == set.workpiece.triangles);
   CHECK(back.workpiece_hash == set.workpiece_hash);
@@ -79,7 +74,8 @@ TEST_CASE("a samples file round-trips exactly", "[samples-file]") {
 }
 
 TEST_CASE("sections sit at 64-byte offsets the metadata names", "[samples-file]") {
-  const fs::path path = write_example(example_set(), "layout.samples");
+  const ScratchDir dir;
+  const fs::path path = write_example(dir, example_set(), "layout.samples");
   const Container c = Container::read(path.string(), FileKind::samples, kSamplesFormatVersion);
   for (const auto& s : c.meta()["sections"]) CHECK(s["offset"].get<std::uint64_t>() % 64 == 0);
   const auto raw = c.raw_section("positions");
@@ -88,9 +84,10 @@ TEST_CASE("sections sit at 64-byte offsets the metadata names", "[samples-file]"
 }
 
 TEST_CASE("corrupted, truncated and foreign files are refused", "[samples-file]") {
-  const fs::path good = write_example(example_set(), "good.samples");
+  const ScratchDir dir;
+  const fs::path good = write_example(dir, example_set(), "good.samples");
   const std::vector<char> bytes = bytes_of(good);
-  const fs::path bad = scratch_dir() / "bad.samples";
+  const fs::path bad = dir.path() / "bad.samples";
 
   SECTION("a flipped byte anywhere is caught by the content hash") {
     for (std::size_t at : {std::size_t{70}, bytes.size() / 2, bytes.size() - 20}) {
