@@ -14,11 +14,11 @@
 
 #include <tbb/global_control.h>
 
-#include "grid_builder.hpp"
-#include "mesh_reader.hpp"
-#include "search_grid.hpp"
-#include "signed_distance.hpp"
-#include "winding_number.hpp"
+#include "distance/signed_distance.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "nominal/winding_number.hpp"
+#include "search/grid_builder.hpp"
+#include "search/search_grid.hpp"
 #include "workload.hpp"
 
 namespace {

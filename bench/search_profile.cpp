@@ -19,9 +19,9 @@
 #include <cstdio>
 #include <vector>
 
-#include "closest_point_search.hpp"
-#include "search_grid.hpp"
-#include "stopwatch.hpp"
+#include "search/closest_point_search.hpp"
+#include "search/search_grid.hpp"
+#include "util/stopwatch.hpp"
 #include "workload.hpp"
 
 namespace {

@@ -11,11 +11,11 @@
 #include <utility>
 #include <vector>
 
-#include "closest_point_search.hpp"
-#include "grid_builder.hpp"
-#include "mesh_reader.hpp"
-#include "sampling.hpp"
-#include "signed_distance.hpp"
+#include "distance/signed_distance.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "sampling/sampling.hpp"
+#include "search/closest_point_search.hpp"
+#include "search/grid_builder.hpp"
 
 namespace ncv::bench {
 

@@ -7,13 +7,13 @@
 #include <optional>
 #include <sstream>
 
-#include "color_map.hpp"
-#include "error_mesh.hpp"
 #include "option_checks.hpp"
-#include "output_file.hpp"
-#include "ply_writer.hpp"
+#include "render/color_map.hpp"
+#include "render/error_mesh.hpp"
+#include "render/ply_writer.hpp"
+#include "render/svg_legend.hpp"
 #include "report_options.hpp"
-#include "svg_legend.hpp"
+#include "util/output_file.hpp"
 
 namespace ncv::cmd {
 namespace {

@@ -4,7 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "distance_file.hpp"
+#include "files/distance_file.hpp"
 
 namespace ncv::cmd {
 

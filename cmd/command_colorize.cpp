@@ -5,7 +5,7 @@
 #include "colorize_options.hpp"
 #include "command_options.hpp"
 #include "commands.hpp"
-#include "distance_file.hpp"
+#include "files/distance_file.hpp"
 #include "option_checks.hpp"
 
 namespace ncv::cmd {

@@ -3,12 +3,12 @@
 
 #include "command_options.hpp"
 #include "commands.hpp"
-#include "distance_file.hpp"
-#include "distance_step.hpp"
-#include "grid_file.hpp"
-#include "input_bytes.hpp"
-#include "samples_file.hpp"
-#include "search_grid.hpp"
+#include "files/distance_file.hpp"
+#include "files/grid_file.hpp"
+#include "files/samples_file.hpp"
+#include "search/search_grid.hpp"
+#include "steps/distance_step.hpp"
+#include "util/input_bytes.hpp"
 
 namespace ncv::cmd {
 namespace {

@@ -3,12 +3,12 @@
 
 #include "command_options.hpp"
 #include "commands.hpp"
-#include "grid_file.hpp"
-#include "input_bytes.hpp"
-#include "memory_guard.hpp"
-#include "mesh_reader.hpp"
+#include "files/grid_file.hpp"
+#include "mesh/mesh_reader.hpp"
 #include "option_checks.hpp"
-#include "stopwatch.hpp"
+#include "util/input_bytes.hpp"
+#include "util/memory_guard.hpp"
+#include "util/stopwatch.hpp"
 
 namespace ncv::cmd {
 namespace {

@@ -5,11 +5,11 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "container.hpp"
-#include "error.hpp"
-#include "input_bytes.hpp"
+#include "files/container.hpp"
 #include "option_checks.hpp"
-#include "output_file.hpp"
+#include "util/error.hpp"
+#include "util/input_bytes.hpp"
+#include "util/output_file.hpp"
 
 namespace ncv::cmd {
 namespace {

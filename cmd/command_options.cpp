@@ -5,13 +5,13 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include "error.hpp"
-#include "input_bytes.hpp"
-#include "memory_guard.hpp"
+#include "files/samples_file.hpp"
 #include "option_checks.hpp"
-#include "samples_file.hpp"
-#include "sampling_step.hpp"
-#include "stopwatch.hpp"
+#include "sampling/sampling_step.hpp"
+#include "util/error.hpp"
+#include "util/input_bytes.hpp"
+#include "util/memory_guard.hpp"
+#include "util/stopwatch.hpp"
 
 namespace ncv::cmd {
 

@@ -4,8 +4,8 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "distance_step.hpp"
-#include "sampling.hpp"
+#include "sampling/sampling.hpp"
+#include "steps/distance_step.hpp"
 
 namespace ncv::cmd {
 

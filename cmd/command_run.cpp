@@ -9,15 +9,15 @@
 #include "colorize_options.hpp"
 #include "command_options.hpp"
 #include "commands.hpp"
-#include "grid_file.hpp"
-#include "input_bytes.hpp"
-#include "memory_guard.hpp"
-#include "mesh_reader.hpp"
+#include "files/grid_file.hpp"
+#include "files/samples_file.hpp"
+#include "mesh/mesh_reader.hpp"
 #include "option_checks.hpp"
 #include "report_options.hpp"
-#include "samples_file.hpp"
-#include "search_grid.hpp"
-#include "stopwatch.hpp"
+#include "search/search_grid.hpp"
+#include "util/input_bytes.hpp"
+#include "util/memory_guard.hpp"
+#include "util/stopwatch.hpp"
 
 namespace ncv::cmd {
 namespace {

@@ -3,8 +3,8 @@
 
 #include "command_options.hpp"
 #include "commands.hpp"
-#include "mesh_reader.hpp"
-#include "samples_file.hpp"
+#include "files/samples_file.hpp"
+#include "mesh/mesh_reader.hpp"
 
 namespace ncv::cmd {
 namespace {

@@ -5,10 +5,10 @@
 #include <optional>
 
 #include "commands.hpp"
-#include "distance_file.hpp"
-#include "error.hpp"
-#include "output_file.hpp"
+#include "files/distance_file.hpp"
 #include "report_options.hpp"
+#include "util/error.hpp"
+#include "util/output_file.hpp"
 
 namespace ncv::cmd {
 namespace {

@@ -7,9 +7,9 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "error.hpp"
-#include "logging.hpp"
-#include "output_file.hpp"
+#include "util/error.hpp"
+#include "util/logging.hpp"
+#include "util/output_file.hpp"
 
 int main(int argc, char** argv) {
   using namespace ncv;

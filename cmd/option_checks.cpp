@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdint>
 
-#include "error.hpp"
-#include "sampling_step.hpp"
-#include "tolerance.hpp"
+#include "sampling/sampling_step.hpp"
+#include "statistics/tolerance.hpp"
+#include "util/error.hpp"
 
 namespace ncv::cmd {
 namespace {

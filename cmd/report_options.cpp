@@ -3,8 +3,8 @@
 #include <sstream>
 
 #include "option_checks.hpp"
-#include "output_file.hpp"
-#include "svg_histogram.hpp"
+#include "render/svg_histogram.hpp"
+#include "util/output_file.hpp"
 
 namespace ncv::cmd {
 

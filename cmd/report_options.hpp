@@ -5,8 +5,8 @@
 #include <optional>
 #include <string>
 
-#include "output_file.hpp"
-#include "statistics_report.hpp"
+#include "statistics/statistics_report.hpp"
+#include "util/output_file.hpp"
 
 namespace ncv::cmd {
 

@@ -4,13 +4,13 @@
 // accepted.
 #include <sstream>
 
-#include "color_map.hpp"
-#include "container.hpp"
-#include "distance_file.hpp"
-#include "error_mesh.hpp"
+#include "files/container.hpp"
+#include "files/distance_file.hpp"
 #include "fuzz_support.hpp"
-#include "ply_writer.hpp"
-#include "statistics_report.hpp"
+#include "render/color_map.hpp"
+#include "render/error_mesh.hpp"
+#include "render/ply_writer.hpp"
+#include "statistics/statistics_report.hpp"
 
 namespace {
 

@@ -5,10 +5,10 @@
 // not compared with brute force here: sealing lets the fuzzer forge cell lists that miss
 // cells, which validation documents it cannot tell; fuzz_mesh checks the grids ncverify
 // builds itself bit for bit.)
-#include "container.hpp"
+#include "distance/signed_distance.hpp"
+#include "files/container.hpp"
+#include "files/grid_file.hpp"
 #include "fuzz_support.hpp"
-#include "grid_file.hpp"
-#include "signed_distance.hpp"
 
 namespace {
 

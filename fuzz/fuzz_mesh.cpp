@@ -8,11 +8,11 @@
 #include <cmath>
 #include <utility>
 
+#include "distance/signed_distance.hpp"
+#include "files/grid_file.hpp"
 #include "fuzz_support.hpp"
-#include "grid_file.hpp"
-#include "mesh_reader.hpp"
-#include "sampling.hpp"
-#include "signed_distance.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "sampling/sampling.hpp"
 
 namespace {
 

@@ -1,9 +1,9 @@
 // Samples files (kind SMPL) as `distance` reads them: Container::parse, load_sample_set,
 // then the per-sample normals the paper's sign rule computes from the loaded lattice.
-#include "container.hpp"
+#include "files/container.hpp"
+#include "files/samples_file.hpp"
 #include "fuzz_support.hpp"
-#include "sample_normals.hpp"
-#include "samples_file.hpp"
+#include "sampling/sample_normals.hpp"
 
 namespace {
 

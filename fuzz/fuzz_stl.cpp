@@ -2,7 +2,7 @@
 // would have chosen: the binary reader must refuse every size that does not match its
 // header's count before allocating, the ASCII reader every malformed or truncated text.
 #include "fuzz_support.hpp"
-#include "stl_reader.hpp"
+#include "mesh/stl_reader.hpp"
 
 namespace {
 

@@ -15,8 +15,8 @@
 #include <memory>
 #include <vector>
 
-#include "buffer.hpp"
-#include "error.hpp"
+#include "util/buffer.hpp"
+#include "util/error.hpp"
 
 namespace ncv::fuzz {
 

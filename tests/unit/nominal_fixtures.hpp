@@ -12,7 +12,7 @@
 #include <tuple>
 #include <vector>
 
-#include "mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace ncv::fixtures {
 

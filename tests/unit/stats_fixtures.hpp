@@ -5,8 +5,8 @@
 #include <functional>
 #include <vector>
 
-#include "mesh.hpp"
-#include "sampling.hpp"
+#include "mesh/mesh.hpp"
+#include "sampling/sampling.hpp"
 
 namespace ncv::test {
 

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "ncgen/milling_simulation.hpp"
 #include "ncgen/milling_stage.hpp"
 

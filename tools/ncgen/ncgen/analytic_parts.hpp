@@ -2,7 +2,7 @@
 // boxes and a box whose top a ball-end cutter has left scallops on.
 #pragma once
 
-#include "mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace ncv::gen {
 

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "ncgen/grid.hpp"
 
 namespace ncv::gen {

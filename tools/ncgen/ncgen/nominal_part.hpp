@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "ncgen/grid.hpp"
 #include "ncgen/mould_core.hpp"
 

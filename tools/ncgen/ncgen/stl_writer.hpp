@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string_view>
 
-#include "mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace ncv::gen {
 

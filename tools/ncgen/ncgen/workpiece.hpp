@@ -7,7 +7,7 @@
 #include <functional>
 #include <vector>
 
-#include "mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "ncgen/milling_simulation.hpp"
 #include "ncgen/mould_core.hpp"
 

@@ -1,0 +1,170 @@
+#include "distance/signed_distance.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <thread>
+
+#include <fmt/format.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include "nominal/winding_number.hpp"
+#include "search/closest_point_search.hpp"
+#include "util/error.hpp"
+
+namespace ncv {
+namespace {
+
+void check_inputs(std::span<const Vec3> points, std::span<const Vec3> sample_normals,
+                  SignMethod method) {
+  // The first bad point, found in parallel (the lowest index, whatever the thread count).
+  const std::size_t bad = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, points.size(), 1 << 14), points.size(),
+      [&](const tbb::blocked_range<std::size_t>& range, std::size_t first) {
+        for (std::size_t i = range.begin(); i < range.end() && i < first; ++i) {
+          const Vec3 p = points[i];
+          if (!is_finite(p) || max_abs(p) > kMaxCoordinate) {
+            return i;
+          }
+        }
+        return first;
+      },
+      [](std::size_t a, std::size_t b) { return std::min(a, b); });
+  if (bad < points.size()) {
+    throw InputError("query points",
+                     fmt::format("point {} is not finite or beyond {}", bad, kMaxCoordinate));
+  }
+  if (method == SignMethod::paper && sample_normals.size() != points.size()) {
+    throw UsageError(
+        fmt::format("the paper's sign rule needs one sample normal per point ({} "
+                    "normals for {} points)",
+                    sample_normals.size(), points.size()));
+  }
+}
+
+// Everything one thread needs: a grid searcher (it owns the per-triangle stamps) and its
+// share of the counters.
+struct Worker {
+  std::optional<GridSearch> search;
+  SearchCounters counters;
+};
+
+class SignedDistanceJob {
+ public:
+  SignedDistanceJob(const NominalSurface& nominal, const SearchGrid* grid,
+                    std::span<const Vec3> points, std::span<const Vec3> normals, SignMethod method)
+      : nominal_(nominal), grid_(grid), points_(points), normals_(normals), method_(method) {
+    if (method_ == SignMethod::winding)
+      tree_ = std::make_unique<WindingNumberTree>(nominal.corners());
+  }
+
+  void run(DistanceField& field, std::size_t begin, std::size_t end) {
+    Worker& worker = workers_.local();
+    if (grid_ && !worker.search) worker.search.emplace(*grid_);
+    for (std::size_t i = begin; i < end; ++i) {
+      if (worker.search && i % kDistanceBlockSize == 0) worker.search->forget_hint();
+      const Vec3 p = nominal_.to_local(points_[i]);
+      const ClosestHit hit = worker.search
+                                 ? worker.search->closest(p, worker.counters)
+                                 : brute_force_closest(nominal_.corners(), p, worker.counters);
+      field.distance[i] = signed_value(i, p, hit);
+      field.closest_point[i] = nominal_.to_global(hit.point);
+      field.closest_face[i] = hit.triangle;
+    }
+  }
+
+  SearchCounters counters() {
+    SearchCounters total;
+    for (const Worker& worker : workers_) {
+      total.triangles_tested += worker.counters.triangles_tested;
+      total.triangles_considered += worker.counters.triangles_considered;
+      total.cells_visited += worker.counters.cells_visited;
+    }
+    return total;
+  }
+
+ private:
+  double signed_value(std::size_t i, Vec3 p, const ClosestHit& hit) const {
+    if (hit.squared_distance == 0) return 0.0;
+    const double distance = std::sqrt(hit.squared_distance);
+    return is_inside(i, p, hit) ? -distance : distance;
+  }
+
+  bool is_inside(std::size_t i, Vec3 p, const ClosestHit& hit) const {
+    const Vec3 offset = p - hit.point;
+    switch (method_) {
+      case SignMethod::paper:
+        return !(dot(normals_[i], offset) > 0);
+      case SignMethod::winding:
+        return tree_->evaluate(p) >= 0.5;
+      default: {  // pseudonormal; automatic was resolved by the constructor's caller
+        const Vec3 normal = nominal_.pseudonormal(hit.triangle, hit.feature);
+        const double side = dot(offset, normal);
+        if (side != 0) return side < 0;
+        // With a usable pseudonormal, the offset of a point off the surface lies in the
+        // feature's normal cone, where the dot product is strictly positive or negative;
+        // a zero comes only from a point on the surface whose offset is rounding noise
+        // (common: machined faces that coincide with nominal ones), so its sign is moot.
+        if (normal != Vec3{}) return false;
+        return winding_number_exact(nominal_.corners(), p) >= 0.5;
+      }
+    }
+  }
+
+  const NominalSurface& nominal_;
+  const SearchGrid* grid_;
+  std::span<const Vec3> points_;
+  std::span<const Vec3> normals_;
+  SignMethod method_;
+  std::unique_ptr<WindingNumberTree> tree_;
+  tbb::enumerable_thread_specific<Worker> workers_;
+};
+
+}  // namespace
+
+SignMethod resolve_sign_method(const NominalSurface& nominal, SignMethod requested) {
+  return requested == SignMethod::automatic ? nominal.automatic_sign_method() : requested;
+}
+
+DistanceField compute_signed_distances(const NominalSurface& nominal, const SearchGrid* grid,
+                                       std::span<const Vec3> points,
+                                       std::span<const Vec3> sample_normals, SignMethod method,
+                                       SearchStatistics* statistics,
+                                       const DistanceProgress& progress) {
+  check_inputs(points, sample_normals, method);
+  const std::size_t n = points.size();
+  DistanceField field;
+  field.distance.resize(n);
+  field.closest_point.resize(n);
+  field.closest_face.resize(n);
+
+  SignedDistanceJob job(nominal, grid, points, sample_normals,
+                        resolve_sign_method(nominal, method));
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<std::size_t> done{0};
+  const std::size_t blocks = (n + kDistanceBlockSize - 1) / kDistanceBlockSize;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      const std::size_t begin = range.begin() * kDistanceBlockSize;
+                      const std::size_t end = std::min(n, range.end() * kDistanceBlockSize);
+                      job.run(field, begin, end);
+                      const std::size_t finished = done += end - begin;
+                      if (progress && std::this_thread::get_id() == caller) progress(finished, n);
+                    });
+  if (progress) progress(n, n);
+
+  if (statistics) {
+    const SearchCounters counters = job.counters();
+    statistics->queries = n;
+    statistics->triangles_tested = counters.triangles_tested;
+    statistics->triangles_considered = counters.triangles_considered;
+    statistics->cells_visited = counters.cells_visited;
+  }
+  return field;
+}
+
+}  // namespace ncv

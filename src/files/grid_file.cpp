@@ -1,0 +1,119 @@
+#include "files/grid_file.hpp"
+
+#include "files/mesh_arrays.hpp"
+
+namespace ncv {
+namespace {
+
+nlohmann::json topology_meta(const TopologyReport& t) {
+  return {{"closed", t.closed()},
+          {"manifold", t.manifold()},
+          {"consistently_oriented", t.consistently_oriented()},
+          {"outward", t.outward()},
+          {"edges", t.edges},
+          {"boundary_edges", t.boundary_edges},
+          {"non_manifold_edges", t.non_manifold_edges},
+          {"misoriented_edges", t.misoriented_edges},
+          {"non_manifold_vertices", t.non_manifold_vertices},
+          {"degenerate_triangles", t.degenerate_triangles},
+          {"duplicate_triangles", t.duplicate_triangles},
+          {"signed_volume", t.signed_volume}};
+}
+
+nlohmann::json grid_meta(const NominalGrid& g, const GridStatistics& s) {
+  const BoundingBox box = bounding_box(g.mesh);
+  const NominalSurface& nominal = *g.nominal;
+  return {{"tool", "ncverify " NCV_VERSION},
+          {"nominal",
+           {{"source", g.nominal_source},
+            {"hash", hash_hex(g.nominal_hash)},
+            {"vertices", g.mesh.vertex_count()},
+            {"triangles", g.mesh.triangle_count()},
+            {"bbox_min", {box.min.x, box.min.y, box.min.z}},
+            {"bbox_max", {box.max.x, box.max.y, box.max.z}},
+            {"topology", topology_meta(nominal.topology())},
+            {"flipped_to_outward", nominal.flipped()},
+            {"sign_method", sign_method_name(nominal.automatic_sign_method())}}},
+          {"grid",
+           {{"origin_local", {g.grid.origin.x, g.grid.origin.y, g.grid.origin.z}},
+            {"cell_size", g.grid.cell_size},
+            {"requested_cell_size", s.requested_cell_size},
+            {"dims", g.grid.dims},
+            {"cells", g.grid.cell_count()},
+            {"empty_cells", s.empty_cells},
+            {"references", g.grid.cell_triangles.size()},
+            {"references_per_triangle", s.references_per_triangle}}}};
+}
+
+template <class T>
+T number_field(const Container& c, const std::string& pointer) {
+  const nlohmann::json& value = c.field(pointer);
+  if (!value.is_number()) c.fail("metadata field " + pointer + " is not a number");
+  return value.get<T>();
+}
+
+}  // namespace
+
+NominalGrid build_nominal_grid(Mesh mesh, const std::string& source, const GridOptions& options,
+                               GridStatistics* statistics) {
+  NominalGrid g;
+  g.nominal_source = source;
+  g.mesh = std::move(mesh);
+  g.nominal_hash = mesh_hash(g.mesh);
+  g.nominal = std::make_unique<NominalSurface>(g.mesh, source);
+  g.grid = build_uniform_grid(*g.nominal, options, statistics);
+  return g;
+}
+
+void write_grid_file(const NominalGrid& g, const GridStatistics& statistics, OutputFile& out) {
+  ContainerWriter writer(FileKind::grid, kGridFormatVersion, grid_meta(g, statistics));
+  writer.add<double>("nominal_vertices", flat_coordinates(g.mesh.vertices),
+                     {g.mesh.vertex_count(), 3});
+  writer.add<std::uint32_t>("nominal_triangles", flat_indices(g.mesh.triangles),
+                            {g.mesh.triangle_count(), 3});
+  writer.add<std::uint64_t>("cell_offsets", g.grid.cell_offsets, {g.grid.cell_offsets.size()});
+  writer.add<std::uint32_t>("cell_triangles", g.grid.cell_triangles,
+                            {g.grid.cell_triangles.size()});
+  writer.write(out);
+}
+
+NominalGrid read_grid_file(const std::string& path) {
+  return load_nominal_grid(Container::read(path, FileKind::grid, kGridFormatVersion));
+}
+
+NominalGrid load_nominal_grid(const Container& c) {
+  NominalGrid g;
+  const std::uint64_t V = c.count("/nominal/vertices"), T = c.count("/nominal/triangles");
+  g.mesh.vertices = c.get_rows<double, Vec3>("nominal_vertices", V);
+  g.mesh.triangles = c.get_rows<std::uint32_t, Triangle>("nominal_triangles", T);
+  if (!c.field("/nominal/hash").is_string()) c.fail("nominal hash is malformed");
+  g.nominal_hash = parse_hash_hex(c.field("/nominal/hash").get<std::string>(), c);
+  if (mesh_hash(g.mesh) != g.nominal_hash) c.fail("nominal mesh hash does not match");
+  g.nominal_source = c.field("/nominal/source").is_string()
+                         ? c.field("/nominal/source").get<std::string>()
+                         : std::string("nominal");
+  g.nominal = std::make_unique<NominalSurface>(g.mesh, c.source());
+
+  const nlohmann::json& origin = c.field("/grid/origin_local");
+  const nlohmann::json& dims = c.field("/grid/dims");
+  if (!origin.is_array() || origin.size() != 3 || !dims.is_array() || dims.size() != 3) {
+    c.fail("grid origin or dimensions are malformed");
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!origin[axis].is_number() || !dims[axis].is_number_unsigned() ||
+        dims[axis].get<std::uint64_t>() > std::numeric_limits<std::uint32_t>::max()) {
+      c.fail("grid origin or dimensions are malformed");
+    }
+    g.grid.origin[axis] = origin[axis].get<double>();
+    g.grid.dims[axis] = dims[axis].get<std::uint32_t>();
+  }
+  g.grid.cell_size = number_field<double>(c, "/grid/cell_size");
+  const auto cells = UniformGrid::checked_cell_count(g.grid.dims);
+  if (!cells) c.fail("grid dimensions overflow");
+  g.grid.cell_offsets = c.get<std::uint64_t>("cell_offsets", *cells + 1);
+  g.grid.cell_triangles = c.get<std::uint32_t>("cell_triangles", c.count("/grid/references"));
+  g.grid.validate(*g.nominal, c.source());
+  return g;
+}
+
+}  // namespace ncv

@@ -1,0 +1,150 @@
+#include "files/samples_file.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "files/mesh_arrays.hpp"
+
+namespace ncv {
+namespace {
+
+SamplingScheme parse_scheme(const std::string& name, const Container& from) {
+  if (name == "all") return SamplingScheme::all;
+  if (name == "paper-ii") return SamplingScheme::paper_ii;
+  from.fail(fmt::format("unknown sampling scheme '{}'", name));
+}
+
+void validate_mesh(const Mesh& mesh, const Container& from) {
+  for (const Vec3& v : mesh.vertices) {
+    if (!is_finite(v)) from.fail("workpiece vertex coordinates are not finite");
+  }
+  for (const Triangle& t : mesh.triangles) {
+    for (std::uint32_t v : t) {
+      if (v >= mesh.vertex_count()) from.fail("workpiece triangle refers to a missing vertex");
+    }
+  }
+}
+
+// Vertex samples are 0..k-1 in vertex order, exactly the vertices of sampled triangles.
+std::uint64_t validate_vertex_samples(const SampleSet& set, const Container& from) {
+  std::vector<bool> needed(set.workpiece.vertex_count(), false);
+  for (std::size_t t = 0; t < set.tri_n.size(); ++t) {
+    if (set.tri_n[t] == 1) from.fail("a triangle has lattice size 1");
+    if (set.tri_n[t] == 0) continue;
+    for (std::uint32_t v : set.workpiece.triangles[t]) needed[v] = true;
+  }
+  std::uint64_t next = 0;
+  for (std::size_t v = 0; v < needed.size(); ++v) {
+    const std::uint32_t expected = needed[v] ? static_cast<std::uint32_t>(next++) : kNoSample;
+    if (set.vertex_sample[v] != expected) from.fail("vertex sample numbering is inconsistent");
+  }
+  return next;
+}
+
+void validate_lattice(const SampleSet& set, const Container& from) {
+  std::uint64_t next = validate_vertex_samples(set, from);
+  const std::uint64_t samples = set.sample_count();
+  for (std::size_t t = 0; t < set.tri_n.size(); ++t) {
+    const std::uint64_t own = lattice_interior_count(set.tri_n[t]);
+    if (set.tri_first[t] != next || own > samples - std::min(samples, next)) {
+      from.fail("per-triangle sample offsets are inconsistent");
+    }
+    next += own;
+  }
+  if (next != samples) from.fail("sample count does not match the lattice");
+  for (std::uint64_t s = 0; s < samples; ++s) {
+    const std::uint32_t t = set.owner[s];
+    if (t >= set.tri_n.size() || set.tri_n[t] < 2) from.fail("a sample has an invalid owner");
+    const std::uint64_t n = set.tri_n[t];
+    const std::uint64_t i = set.lattice_i[s], j = set.lattice_j[s];
+    if (i + j > n - 1 || set.sample_at(t, set.lattice_i[s], set.lattice_j[s]) != s) {
+      from.fail("a sample's lattice coordinates are inconsistent");
+    }
+    if (!is_finite(set.positions[s])) from.fail("a sample position is not finite");
+  }
+}
+
+}  // namespace
+
+std::string scheme_name(SamplingScheme scheme) {
+  return scheme == SamplingScheme::all ? "all" : "paper-ii";
+}
+
+nlohmann::json sample_set_meta(const SampleSet& set) {
+  const BoundingBox box = bounding_box(set.workpiece);
+  return {{"tool", "ncverify " NCV_VERSION},
+          {"workpiece",
+           {{"source", set.workpiece_source},
+            {"hash", hash_hex(set.workpiece_hash)},
+            {"vertices", set.workpiece.vertex_count()},
+            {"triangles", set.workpiece.triangle_count()},
+            {"bbox_min", {box.min.x, box.min.y, box.min.z}},
+            {"bbox_max", {box.max.x, box.max.y, box.max.z}}}},
+          {"sampling",
+           {{"step", set.step},
+            {"step_spec", set.step_spec},
+            {"scheme", scheme_name(set.scheme)},
+            {"samples", set.sample_count()}}},
+          {"records",
+           {{"name", "samples"},
+            {"count", set.sample_count()},
+            {"sections", {"positions", "owner", "lattice_i", "lattice_j"}}}}};
+}
+
+void add_sample_sections(ContainerWriter& writer, const SampleSet& set) {
+  const std::uint64_t V = set.workpiece.vertex_count(), T = set.workpiece.triangle_count(),
+                      S = set.sample_count();
+  writer.add<double>("workpiece_vertices", flat_coordinates(set.workpiece.vertices), {V, 3});
+  writer.add<std::uint32_t>("workpiece_triangles", flat_indices(set.workpiece.triangles), {T, 3});
+  writer.add<std::uint32_t>("tri_n", set.tri_n, {T});
+  writer.add<std::uint64_t>("tri_first", set.tri_first, {T});
+  writer.add<std::uint32_t>("vertex_sample", set.vertex_sample, {V});
+  writer.add<double>("positions", flat_coordinates(set.positions), {S, 3});
+  writer.add<std::uint32_t>("owner", set.owner, {S});
+  writer.add<std::uint32_t>("lattice_i", set.lattice_i, {S});
+  writer.add<std::uint32_t>("lattice_j", set.lattice_j, {S});
+}
+
+SampleSet load_sample_set(const Container& c) {
+  SampleSet set;
+  const std::uint64_t V = c.count("/workpiece/vertices"), T = c.count("/workpiece/triangles"),
+                      S = c.count("/sampling/samples");
+  set.workpiece.vertices = c.get_rows<double, Vec3>("workpiece_vertices", V);
+  set.workpiece.triangles = c.get_rows<std::uint32_t, Triangle>("workpiece_triangles", T);
+  validate_mesh(set.workpiece, c);
+  if (!c.field("/workpiece/source").is_string()) c.fail("workpiece source is malformed");
+  set.workpiece_source = c.field("/workpiece/source").get<std::string>();
+  if (!c.field("/workpiece/hash").is_string()) c.fail("workpiece hash is malformed");
+  set.workpiece_hash = parse_hash_hex(c.field("/workpiece/hash").get<std::string>(), c);
+  if (mesh_hash(set.workpiece) != set.workpiece_hash) c.fail("workpiece hash does not match");
+  if (!c.field("/sampling/step").is_number() || !c.field("/sampling/step_spec").is_string() ||
+      !c.field("/sampling/scheme").is_string()) {
+    c.fail("sampling parameters are malformed");
+  }
+  set.step = c.field("/sampling/step").get<double>();
+  if (!(set.step > 0) || !std::isfinite(set.step)) c.fail("sampling step is not positive");
+  set.step_spec = c.field("/sampling/step_spec").get<std::string>();
+  set.scheme = parse_scheme(c.field("/sampling/scheme").get<std::string>(), c);
+  set.tri_n = c.get<std::uint32_t>("tri_n", T);
+  set.tri_first = c.get<std::uint64_t>("tri_first", T);
+  set.vertex_sample = c.get<std::uint32_t>("vertex_sample", V);
+  set.positions = c.get_rows<double, Vec3>("positions", S);
+  set.owner = c.get<std::uint32_t>("owner", S);
+  set.lattice_i = c.get<std::uint32_t>("lattice_i", S);
+  set.lattice_j = c.get<std::uint32_t>("lattice_j", S);
+  validate_lattice(set, c);
+  return set;
+}
+
+void write_samples_file(const SampleSet& set, OutputFile& out) {
+  ContainerWriter writer(FileKind::samples, kSamplesFormatVersion, sample_set_meta(set));
+  add_sample_sections(writer, set);
+  writer.write(out);
+}
+
+SampleSet read_samples_file(const std::string& path) {
+  return load_sample_set(Container::read(path, FileKind::samples, kSamplesFormatVersion));
+}
+
+}  // namespace ncv

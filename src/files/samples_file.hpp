@@ -1,0 +1,25 @@
+// The samples file (kind SMPL): the welded workpiece and its lattice samples, everything the
+// later steps need. Layout in docs/FORMATS.md. The distance file embeds the same sections.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "files/container.hpp"
+#include "sampling/sampling.hpp"
+
+namespace ncv {
+
+std::string scheme_name(SamplingScheme scheme);  // "all" or "paper-ii"
+
+// Metadata describing the sample set (workpiece, sampling parameters, counts).
+nlohmann::json sample_set_meta(const SampleSet& set);
+// Adds the workpiece and sample sections; `set` must outlive the writer.
+void add_sample_sections(ContainerWriter& writer, const SampleSet& set);
+// Loads and fully validates (indices, lattice bookkeeping, mesh hash) the sample sections.
+SampleSet load_sample_set(const Container& container);
+
+void write_samples_file(const SampleSet& set, OutputFile& out);
+SampleSet read_samples_file(const std::string& path);
+
+}  // namespace ncv

@@ -1,0 +1,36 @@
+#include "mesh/mesh.hpp"
+
+#include <xxhash.h>
+
+namespace ncv {
+
+Vec3 area_vector(const Mesh& mesh, std::size_t triangle) {
+  const Vec3 a = mesh.corner(triangle, 0);
+  return cross(mesh.corner(triangle, 1) - a, mesh.corner(triangle, 2) - a);
+}
+
+double triangle_area(const Mesh& mesh, std::size_t triangle) {
+  return 0.5 * norm(area_vector(mesh, triangle));
+}
+
+double surface_area(const Mesh& mesh) {
+  double area = 0;
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) area += triangle_area(mesh, t);
+  return area;
+}
+
+BoundingBox bounding_box(const Mesh& mesh) {
+  return BoundingBox::of(mesh.vertices);
+}
+
+std::uint64_t mesh_hash(const Mesh& mesh) {
+  XXH3_state_t* state = XXH3_createState();
+  XXH3_64bits_reset(state);
+  XXH3_64bits_update(state, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vec3));
+  XXH3_64bits_update(state, mesh.triangles.data(), mesh.triangles.size() * sizeof(Triangle));
+  const std::uint64_t hash = XXH3_64bits_digest(state);
+  XXH3_freeState(state);
+  return hash;
+}
+
+}  // namespace ncv

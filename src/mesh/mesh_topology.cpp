@@ -1,0 +1,239 @@
+#include "mesh/mesh_topology.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+#include "util/ordered_reduce.hpp"
+
+namespace ncv {
+namespace {
+
+bool repeats_vertex(const Triangle& t) {
+  return t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
+}
+
+std::uint32_t slot_start(const Mesh& mesh, std::uint32_t slot) {
+  return mesh.triangles[slot / 3][slot % 3];
+}
+std::uint32_t slot_end(const Mesh& mesh, std::uint32_t slot) {
+  return mesh.triangles[slot / 3][(slot % 3 + 1) % 3];
+}
+std::uint32_t slot_low(const Mesh& mesh, std::uint32_t slot) {
+  return std::min(slot_start(mesh, slot), slot_end(mesh, slot));
+}
+std::uint32_t slot_high(const Mesh& mesh, std::uint32_t slot) {
+  return std::max(slot_start(mesh, slot), slot_end(mesh, slot));
+}
+
+// Slots of usable triangles as keys (higher vertex << 32 | slot), bucketed by lower vertex
+// (counting sort keeps slot order). Sorting a bucket's keys orders its slots by higher
+// vertex, then by slot, without reading the mesh again.
+std::vector<std::uint64_t> slot_keys_by_low_vertex(const Mesh& mesh,
+                                                   std::vector<std::uint32_t>& bucket_begin) {
+  bucket_begin.assign(mesh.vertex_count() + 1, 0);
+  const auto slot_total = static_cast<std::uint32_t>(3 * mesh.triangle_count());
+  for (std::uint32_t s = 0; s < slot_total; ++s) {
+    if (!repeats_vertex(mesh.triangles[s / 3])) ++bucket_begin[slot_low(mesh, s) + 1];
+  }
+  std::partial_sum(bucket_begin.begin(), bucket_begin.end(), bucket_begin.begin());
+  std::vector<std::uint32_t> cursor(bucket_begin.begin(), bucket_begin.end() - 1);
+  std::vector<std::uint64_t> keys(bucket_begin.back());
+  for (std::uint32_t s = 0; s < slot_total; ++s) {
+    if (repeats_vertex(mesh.triangles[s / 3])) continue;
+    keys[cursor[slot_low(mesh, s)]++] = std::uint64_t{slot_high(mesh, s)} << 32 | s;
+  }
+  return keys;
+}
+
+struct CornerForest {
+  std::vector<std::uint32_t> parent;
+
+  std::uint32_t find(std::uint32_t c) {
+    while (parent[c] != c) c = parent[c] = parent[parent[c]];
+    return c;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+std::uint32_t start_corner(std::uint32_t slot) {
+  return slot;
+}
+std::uint32_t end_corner(std::uint32_t slot) {
+  return slot / 3 * 3 + (slot % 3 + 1) % 3;
+}
+
+// A vertex is non-manifold when its triangles form more than one fan, fans being joined
+// across the two-triangle edges around it: corners are united across each such edge and
+// every vertex counts its distinct roots.
+std::uint64_t count_non_manifold_vertices(const Mesh& mesh, const EdgeIncidence& incidence) {
+  CornerForest forest;
+  forest.parent.resize(3 * mesh.triangle_count());
+  std::iota(forest.parent.begin(), forest.parent.end(), 0u);
+  for (std::size_t e = 0; e < incidence.edge_count(); ++e) {
+    if (incidence.slot_count(e) != 2) continue;
+    const std::uint32_t s1 = incidence.slots[incidence.edge_begin[e]];
+    const std::uint32_t s2 = incidence.slots[incidence.edge_begin[e] + 1];
+    const bool same_direction = slot_start(mesh, s1) == slot_start(mesh, s2);
+    forest.unite(start_corner(s1), same_direction ? start_corner(s2) : end_corner(s2));
+    forest.unite(end_corner(s1), same_direction ? end_corner(s2) : start_corner(s2));
+  }
+  std::vector<std::uint8_t> fans(mesh.vertex_count(), 0);
+  std::uint64_t non_manifold = 0;
+  for (std::uint32_t c = 0; c < forest.parent.size(); ++c) {
+    if (repeats_vertex(mesh.triangles[c / 3]) || forest.find(c) != c) continue;
+    std::uint8_t& count = fans[mesh.triangles[c / 3][c % 3]];
+    if (count == 1) ++non_manifold;
+    count = static_cast<std::uint8_t>(std::min(count + 1, 2));
+  }
+  return non_manifold;
+}
+
+struct EdgeKinds {
+  std::uint64_t boundary = 0, non_manifold = 0, misoriented = 0;
+};
+
+// Blocks of the parallel counts below (ordered_reduce: fixed blocks, any thread count).
+constexpr std::size_t kCountBlock = 1 << 14;
+
+void count_edge_kinds(const Mesh& mesh, const EdgeIncidence& incidence, TopologyReport& report) {
+  report.edges = incidence.edge_count();
+  const EdgeKinds kinds = ordered_reduce(
+      incidence.edge_count(), kCountBlock, EdgeKinds{},
+      [&](std::size_t begin, std::size_t end) {
+        EdgeKinds part;
+        for (std::size_t e = begin; e < end; ++e) {
+          const std::uint32_t count = incidence.slot_count(e);
+          part.boundary += count == 1;
+          part.non_manifold += count > 2;
+          std::uint32_t forward = 0;
+          for (std::uint32_t i = incidence.edge_begin[e]; i < incidence.edge_begin[e + 1]; ++i) {
+            const std::uint32_t s = incidence.slots[i];
+            forward += slot_start(mesh, s) < slot_end(mesh, s);
+          }
+          part.misoriented += count >= 2 && 2 * forward != count;
+        }
+        return part;
+      },
+      [](EdgeKinds& acc, const EdgeKinds& part) {
+        acc.boundary += part.boundary;
+        acc.non_manifold += part.non_manifold;
+        acc.misoriented += part.misoriented;
+      });
+  report.boundary_edges = kinds.boundary;
+  report.non_manifold_edges = kinds.non_manifold;
+  report.misoriented_edges = kinds.misoriented;
+}
+
+std::uint64_t count_degenerate(const Mesh& mesh) {
+  return ordered_reduce(
+      mesh.triangle_count(), kCountBlock, std::uint64_t{0},
+      [&](std::size_t begin, std::size_t end) {
+        std::uint64_t part = 0;
+        for (std::size_t t = begin; t < end; ++t) {
+          part += repeats_vertex(mesh.triangles[t]) ||
+                  is_degenerate_triangle(mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2));
+        }
+        return part;
+      },
+      [](std::uint64_t& acc, std::uint64_t part) { acc += part; });
+}
+
+std::uint64_t count_duplicates(const Mesh& mesh) {
+  std::vector<Triangle> sorted(mesh.triangles);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sorted.size(), 1 << 14),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t t = range.begin(); t != range.end(); ++t) {
+                        std::sort(sorted[t].begin(), sorted[t].end());
+                      }
+                    });
+  tbb::parallel_sort(sorted.begin(), sorted.end());  // equal triangles end up adjacent either way
+  std::uint64_t duplicates = 0;
+  for (std::size_t i = 1; i < sorted.size(); ++i) duplicates += sorted[i] == sorted[i - 1];
+  return duplicates;
+}
+
+// Relative to the bounding-box centre, so a part far from the origin loses no digits.
+double signed_volume(const Mesh& mesh) {
+  const Vec3 centre = bounding_box(mesh).center();
+  double six_volume = 0;
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    const Vec3 a = mesh.corner(t, 0) - centre;
+    six_volume += dot(a, cross(mesh.corner(t, 1) - centre, mesh.corner(t, 2) - centre));
+  }
+  return six_volume / 6;
+}
+
+}  // namespace
+
+bool is_degenerate_triangle(Vec3 a, Vec3 b, Vec3 c) {
+  const double longest_sq =
+      std::max({squared_norm(b - a), squared_norm(c - b), squared_norm(a - c)});
+  return norm(cross(b - a, c - a)) <= 1e-10 * longest_sq;
+}
+
+// Each vertex's bucket is sorted by high vertex and its runs (edges) counted in parallel;
+// the edges are then numbered bucket after bucket, as a serial pass would number them.
+EdgeIncidence build_edge_incidence(const Mesh& mesh) {
+  std::vector<std::uint32_t> bucket_begin;
+  std::vector<std::uint64_t> keys = slot_keys_by_low_vertex(mesh, bucket_begin);
+  const auto starts_edge = [&](std::uint32_t i, std::size_t v) {
+    return i == bucket_begin[v] || keys[i] >> 32 != keys[i - 1] >> 32;
+  };
+  const std::size_t vertices = mesh.vertex_count();
+  // Bucket v's edge count at v + 1; after the prefix sum, bucket v's first edge at v and the
+  // total last.
+  std::vector<std::uint32_t> first_edge(vertices + 1, 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 1 << 12),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t v = range.begin(); v != range.end(); ++v) {
+                        std::sort(keys.begin() + bucket_begin[v],
+                                  keys.begin() + bucket_begin[v + 1]);
+                        std::uint32_t edges = 0;
+                        for (std::uint32_t i = bucket_begin[v]; i < bucket_begin[v + 1]; ++i) {
+                          edges += starts_edge(i, v);
+                        }
+                        first_edge[v + 1] = edges;
+                      }
+                    });
+  std::partial_sum(first_edge.begin(), first_edge.end(), first_edge.begin());
+
+  EdgeIncidence incidence;
+  incidence.edge_of_slot.assign(3 * mesh.triangle_count(), kNoEdge);
+  incidence.edge_begin.resize(first_edge.back() + 1);
+  incidence.edge_begin.back() = static_cast<std::uint32_t>(keys.size());
+  incidence.slots.resize(keys.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 1 << 12),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t v = range.begin(); v != range.end(); ++v) {
+                        std::uint32_t next = first_edge[v];  // the next edge to start
+                        for (std::uint32_t i = bucket_begin[v]; i < bucket_begin[v + 1]; ++i) {
+                          if (starts_edge(i, v)) incidence.edge_begin[next++] = i;
+                          const auto slot = static_cast<std::uint32_t>(keys[i]);
+                          incidence.slots[i] = slot;
+                          incidence.edge_of_slot[slot] = next - 1;
+                        }
+                      }
+                    });
+  return incidence;
+}
+
+TopologyReport analyse_topology(const Mesh& mesh, const EdgeIncidence& incidence) {
+  TopologyReport report;
+  report.triangles = mesh.triangle_count();
+  count_edge_kinds(mesh, incidence, report);
+  report.non_manifold_vertices = count_non_manifold_vertices(mesh, incidence);
+  report.degenerate_triangles = count_degenerate(mesh);
+  report.duplicate_triangles = count_duplicates(mesh);
+  report.signed_volume = signed_volume(mesh);
+  return report;
+}
+
+}  // namespace ncv

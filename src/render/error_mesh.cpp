@@ -1,0 +1,65 @@
+#include "render/error_mesh.hpp"
+
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "sampling/lattice_triangles.hpp"
+#include "util/error.hpp"
+
+namespace ncv {
+
+namespace {
+
+constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
+
+std::uint32_t vertex_index(std::uint64_t sample) {
+  return static_cast<std::uint32_t>(sample);
+}
+
+}  // namespace
+
+ErrorMesh workpiece_error_mesh(const SampleSet& samples, std::span<const double> d) {
+  ErrorMesh out{samples.workpiece, std::vector<double>(samples.workpiece.vertex_count(), kNoValue)};
+  for (std::size_t v = 0; v < out.values.size(); ++v) {
+    if (samples.vertex_sample[v] != kNoSample) out.values[v] = d[samples.vertex_sample[v]];
+  }
+  return out;
+}
+
+ErrorMesh lattice_error_mesh(const SampleSet& samples, std::span<const double> d) {
+  // PLY face lists hold signed 32-bit vertex indices.
+  if (samples.sample_count() + samples.workpiece.vertex_count() >
+      std::uint64_t{std::numeric_limits<std::int32_t>::max()}) {
+    throw UsageError(
+        fmt::format("{} samples are too many for one PLY mesh; use the workpiece "
+                    "vertices instead of the lattice",
+                    samples.sample_count()));
+  }
+  ErrorMesh out{{samples.positions, {}}, std::vector<double>(d.begin(), d.end())};
+  const Mesh& workpiece = samples.workpiece;
+  std::vector<std::uint32_t> extra_vertex(workpiece.vertex_count(), kNoSample);
+  const auto corner_vertex = [&](std::uint32_t v) {
+    if (samples.vertex_sample[v] != kNoSample) return samples.vertex_sample[v];
+    if (extra_vertex[v] == kNoSample) {
+      extra_vertex[v] = static_cast<std::uint32_t>(out.mesh.vertices.size());
+      out.mesh.vertices.push_back(workpiece.vertices[v]);
+      out.values.push_back(kNoValue);
+    }
+    return extra_vertex[v];
+  };
+  for (std::size_t t = 0; t < workpiece.triangle_count(); ++t) {
+    if (samples.tri_n[t] == 0) {
+      const Triangle& corners = workpiece.triangles[t];
+      out.mesh.triangles.push_back(
+          {corner_vertex(corners[0]), corner_vertex(corners[1]), corner_vertex(corners[2])});
+      continue;
+    }
+    for_each_lattice_triangle(samples, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+      out.mesh.triangles.push_back({vertex_index(a), vertex_index(b), vertex_index(c)});
+    });
+  }
+  return out;
+}
+
+}  // namespace ncv

@@ -1,0 +1,29 @@
+// A mesh carrying one error value per vertex, the input of the coloured PLY.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+#include "sampling/sampling.hpp"
+
+namespace ncv {
+
+struct ErrorMesh {
+  Mesh mesh;
+  std::vector<double> values;  // per vertex; NaN where no sample lies
+};
+
+// The workpiece mesh itself, each vertex with the distance of its sample. A vertex no
+// sampled triangle touches (scheme II) gets NaN: borrowing a value from elsewhere would
+// paint a measurement that was never made. Lattice points inside triangles are not shown.
+ErrorMesh workpiece_error_mesh(const SampleSet& samples, std::span<const double> d);
+
+// The sampling lattice as a mesh: every sample a vertex (numbered as the samples), every
+// lattice sub-triangle a face, so each sample's error is visible. Triangles that share an
+// edge keep their own lattice points on it, so the mesh is not welded along such edges.
+// Unsampled triangles (scheme II) are kept as they are, with NaN at corners no sample
+// covers, so the shape stays whole.
+ErrorMesh lattice_error_mesh(const SampleSet& samples, std::span<const double> d);
+
+}  // namespace ncv

@@ -1,0 +1,23 @@
+// Binary little-endian PLY of a coloured error mesh for MeshLab and CloudCompare
+// (SPEC "Colouring"). Per vertex: float x y z (model coordinates), uchar red green blue
+// baked from the colour map, float quality (MeshLab's per-vertex quality) and float
+// scalar_signed_distance (CloudCompare's scalar field), both the signed error, NaN where
+// no sample lies. Faces: list uchar int vertex_indices.
+#pragma once
+
+#include <span>
+#include <string>
+
+#include "render/color_map.hpp"
+#include "render/error_mesh.hpp"
+#include "util/buffer.hpp"
+
+namespace ncv {
+
+// The whole file; its fixed-size vertex and face records are filled in parallel. comments
+// become header comment lines (line breaks replaced by blanks), followed by one describing
+// the colour map.
+Buffer<char> error_ply(const ErrorMesh& mesh, const ColorMap& map,
+                       std::span<const std::string> comments = {});
+
+}  // namespace ncv

@@ -1,0 +1,28 @@
+#include "sampling/sample_normals.hpp"
+
+namespace ncv {
+
+std::vector<Vec3> sample_normals(const SampleSet& samples) {
+  const Mesh& mesh = samples.workpiece;
+  std::vector<Vec3> vertex_normals(mesh.vertex_count());
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    const Vec3 weighted = area_vector(mesh, t);  // |cross| = twice the area
+    for (std::uint32_t v : mesh.triangles[t]) vertex_normals[v] += weighted;
+  }
+  std::vector<Vec3> normals(samples.sample_count());
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    if (samples.vertex_sample[v] != kNoSample) {
+      normals[samples.vertex_sample[v]] = normalized(vertex_normals[v]);
+    }
+  }
+  for (std::size_t s = 0; s < samples.sample_count(); ++s) {
+    const std::uint32_t t = samples.owner[s];
+    const bool is_corner = samples.vertex_sample[mesh.triangles[t][0]] == s ||
+                           samples.vertex_sample[mesh.triangles[t][1]] == s ||
+                           samples.vertex_sample[mesh.triangles[t][2]] == s;
+    if (!is_corner) normals[s] = normalized(area_vector(mesh, t));
+  }
+  return normals;
+}
+
+}  // namespace ncv

@@ -1,0 +1,211 @@
+#include "sampling/sampling.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "util/error.hpp"
+#include "util/ordered_reduce.hpp"
+
+namespace ncv {
+namespace {
+
+constexpr std::size_t kTriangleBlock = 1 << 14;  // ordered_reduce's blocks
+
+// Lattice coordinates of corner k of a size-n lattice: A = (0,0), B = (n-1,0), C = (0,n-1).
+std::pair<std::uint32_t, std::uint32_t> corner_lattice_coordinates(int k, std::uint32_t n) {
+  if (k == 1) return {n - 1, 0};
+  if (k == 2) return {0, n - 1};
+  return {0, 0};
+}
+
+// Numbers the mesh vertices that belong to a sampled triangle: they are samples
+// 0 .. count-1, each owned by its lowest-index sampled triangle (found in parallel by an
+// atomic minimum, so the result does not depend on the thread count).
+std::uint32_t assign_vertex_samples(SampleSet& set) {
+  const Mesh& mesh = set.workpiece;
+  set.vertex_sample.assign(mesh.vertex_count(), kNoSample);
+  std::vector<std::uint32_t> owner_of_vertex(mesh.vertex_count(), kNoSample);
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, mesh.triangle_count(), 4096), [&](const auto& r) {
+        for (std::size_t t = r.begin(); t != r.end(); ++t) {
+          if (set.tri_n[t] == 0) continue;
+          const auto triangle = static_cast<std::uint32_t>(t);
+          for (const std::uint32_t v : mesh.triangles[t]) {
+            std::atomic_ref<std::uint32_t> owner(owner_of_vertex[v]);
+            std::uint32_t seen = owner.load(std::memory_order_relaxed);
+            while (triangle < seen &&
+                   !owner.compare_exchange_weak(seen, triangle, std::memory_order_relaxed)) {
+            }
+          }
+        }
+      });
+  std::uint32_t count = 0;
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    const std::uint32_t t = owner_of_vertex[v];
+    if (t == kNoSample) continue;
+    set.vertex_sample[v] = count++;
+    const auto& corners = mesh.triangles[t];
+    const int corner = corners[0] == v ? 0 : corners[1] == v ? 1 : 2;  // the first that is v
+    const auto [i, j] = corner_lattice_coordinates(corner, set.tri_n[t]);
+    set.positions.push_back(mesh.vertices[v]);
+    set.owner.push_back(t);
+    set.lattice_i.push_back(i);
+    set.lattice_j.push_back(j);
+  }
+  return count;
+}
+
+bool is_corner(std::uint32_t i, std::uint32_t j, std::uint32_t n) {
+  return (i == 0 && j == 0) || (i == n - 1 && j == 0) || (i == 0 && j == n - 1);
+}
+
+// Writes the non-corner lattice points of triangle t from tri_first[t] on, in row-major order.
+void fill_triangle_samples(SampleSet& set, std::size_t t) {
+  const std::uint32_t n = set.tri_n[t];
+  if (n < 3) return;
+  const Mesh& mesh = set.workpiece;
+  const Vec3 a = mesh.corner(t, 0);
+  const double steps = n - 1;
+  const Vec3 e1 = (mesh.corner(t, 1) - a) / steps;
+  const Vec3 e2 = (mesh.corner(t, 2) - a) / steps;
+  std::uint64_t s = set.tri_first[t];
+  for (std::uint32_t i = 0; i < n; ++i) {
+    for (std::uint32_t j = 0; j + i < n; ++j) {
+      if (is_corner(i, j, n)) continue;
+      set.positions[s] = a + static_cast<double>(i) * e1 + static_cast<double>(j) * e2;
+      set.owner[s] = static_cast<std::uint32_t>(t);
+      set.lattice_i[s] = i;
+      set.lattice_j[s] = j;
+      ++s;
+    }
+  }
+}
+
+}  // namespace
+
+std::uint32_t lattice_size(double area, double step) {
+  const double n_prime = std::sqrt(0.25 + 2.0 * area / (step * step)) - 0.5;
+  // Caps keep the conversion defined; the sample-count guard refuses such steps anyway.
+  if (!(n_prime < 2.0e9)) return 2'000'000'000u;
+  return static_cast<std::uint32_t>(std::lround(n_prime));
+}
+
+std::uint64_t SampleSet::sample_at(std::size_t t, std::uint32_t i, std::uint32_t j) const {
+  const std::uint64_t n = tri_n[t];
+  if (i == 0 && j == 0) return vertex_sample[workpiece.triangles[t][0]];
+  if (i == n - 1 && j == 0) return vertex_sample[workpiece.triangles[t][1]];
+  if (i == 0 && j == n - 1) return vertex_sample[workpiece.triangles[t][2]];
+  // Row-major rank of (i, j) minus the corners that precede it: (0,0) always, and
+  // (0,n-1) once past row 0.
+  const std::uint64_t rank = i * n - i * (i - 1) / 2 + j;
+  return tri_first[t] + rank - (i == 0 ? 1 : 2);
+}
+
+// One pass computes each triangle's area once for both the sizes and the report's counts,
+// in blocks so that the area sum does not depend on the thread count.
+SamplingPlan plan_sampling(const Mesh& mesh, double step, SamplingScheme scheme) {
+  SamplingPlan plan;
+  plan.step = step;
+  plan.scheme = scheme;
+  plan.lattice_sizes.resize(mesh.triangle_count());
+  std::vector<std::uint32_t>& sizes = plan.lattice_sizes;
+  plan.counts = ordered_reduce(
+      sizes.size(), kTriangleBlock, SamplingReport{},
+      [&](std::size_t begin, std::size_t end) {
+        SamplingReport part;
+        for (std::size_t t = begin; t < end; ++t) {
+          const double area = triangle_area(mesh, t);
+          const std::uint32_t n = lattice_size(area, step);
+          sizes[t] = n >= 2 ? n : scheme == SamplingScheme::all ? 2u : 0u;
+          if (n < 2) ++part.small_triangles;
+          if (area == 0) ++part.degenerate_triangles;
+          part.surface_area += area;
+        }
+        return part;
+      },
+      [](SamplingReport& sum, const SamplingReport& part) {
+        sum.small_triangles += part.small_triangles;
+        sum.degenerate_triangles += part.degenerate_triangles;
+        sum.surface_area += part.surface_area;
+      });
+  return plan;
+}
+
+std::uint64_t predicted_sample_count(const Mesh& mesh, const SamplingPlan& plan) {
+  const std::vector<std::uint32_t>& sizes = plan.lattice_sizes;
+  std::vector<std::uint8_t> vertex_used(mesh.vertex_count(), 0);
+  // A tiny step gives up to 2 * 10^18 samples per triangle: the sum saturates rather than
+  // wrap to a count small enough to pass the memory guard.
+  const auto saturating_add = [](std::uint64_t& sum, std::uint64_t value) {
+    if (__builtin_add_overflow(sum, value, &sum)) sum = std::numeric_limits<std::uint64_t>::max();
+  };
+  std::uint64_t count = ordered_reduce(
+      sizes.size(), kTriangleBlock, std::uint64_t{0},
+      [&](std::size_t begin, std::size_t end) {
+        std::uint64_t interior = 0;
+        for (std::size_t t = begin; t < end; ++t) {
+          if (sizes[t] == 0) continue;
+          saturating_add(interior, lattice_interior_count(sizes[t]));
+          for (const std::uint32_t v : mesh.triangles[t]) {
+            std::atomic_ref<std::uint8_t>(vertex_used[v]).store(1, std::memory_order_relaxed);
+          }
+        }
+        return interior;
+      },
+      saturating_add);
+  saturating_add(count, static_cast<std::uint64_t>(
+                            std::count(vertex_used.begin(), vertex_used.end(), std::uint8_t{1})));
+  return count;
+}
+
+SampleSet sample_mesh(Mesh workpiece, double step, SamplingScheme scheme, SamplingReport* report) {
+  SamplingPlan plan = plan_sampling(workpiece, step, scheme);
+  return sample_mesh(std::move(workpiece), std::move(plan), report);
+}
+
+SampleSet sample_mesh(Mesh workpiece, SamplingPlan plan, SamplingReport* report) {
+  SampleSet set;
+  set.workpiece = std::move(workpiece);
+  set.step = plan.step;
+  set.scheme = plan.scheme;
+  set.workpiece_hash = mesh_hash(set.workpiece);
+  set.tri_n = std::move(plan.lattice_sizes);
+
+  const std::uint32_t vertex_samples = assign_vertex_samples(set);
+  set.tri_first.resize(set.tri_n.size());
+  std::uint64_t next = vertex_samples;
+  for (std::size_t t = 0; t < set.tri_n.size(); ++t) {
+    set.tri_first[t] = next;
+    // Only reachable past the memory guard (--force): a wrapped count would size the
+    // arrays too small for the lattice written into them.
+    if (__builtin_add_overflow(next, lattice_interior_count(set.tri_n[t]), &next)) {
+      throw UsageError(
+          fmt::format("sampling at step {} would give more than 2^64 samples", set.step));
+    }
+  }
+  set.positions.resize(next);
+  set.owner.resize(next);
+  set.lattice_i.resize(next);
+  set.lattice_j.resize(next);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, set.tri_n.size(), 1024), [&](const auto& r) {
+    for (std::size_t t = r.begin(); t != r.end(); ++t) {
+      fill_triangle_samples(set, t);
+    }
+  });
+
+  if (report) {
+    *report = plan.counts;
+    report->triangles = set.workpiece.triangle_count();
+    report->samples = set.sample_count();
+  }
+  return set;
+}
+
+}  // namespace ncv

@@ -1,0 +1,89 @@
+// Lattice sampling of the workpiece (paper §3.1, SPEC "Sampling").
+//
+// Triangle t with corners A, B, C and lattice size n holds the points
+//   P(i,j) = A + i(B-A)/(n-1) + j(C-A)/(n-1),  0 <= i <= n-1,  0 <= j <= n-1-i.
+// The three corners are mesh vertices and are shared: every sampled mesh vertex is one
+// sample (vertex_sample), every other lattice point belongs to its triangle alone and is
+// numbered consecutively from tri_first[t] in row-major (i, then j) order.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+
+namespace ncv {
+
+enum class SamplingScheme : std::uint32_t {
+  all = 1,       // paper scheme I: triangles with n < 2 contribute their three vertices
+  paper_ii = 2,  // paper scheme II: triangles with n < 2 are not sampled
+};
+
+inline constexpr std::uint32_t kNoSample = std::numeric_limits<std::uint32_t>::max();
+
+// Equation (1): n' = sqrt(1/4 + 2|T|/step^2) - 1/2, rounded to the nearest integer.
+std::uint32_t lattice_size(double area, double step);
+// Number of lattice points of a size-n lattice: n(n+1)/2.
+constexpr std::uint64_t lattice_point_count(std::uint64_t n) {
+  return n * (n + 1) / 2;
+}
+// Lattice points of a size-n lattice that are not corners (n >= 2).
+constexpr std::uint64_t lattice_interior_count(std::uint64_t n) {
+  return n < 2 ? 0 : lattice_point_count(n) - 3;
+}
+
+struct SampleSet {
+  Mesh workpiece;
+  std::string workpiece_source;  // the file it came from, for reports
+  double step = 0;               // sampling step in model units
+  std::string step_spec;         // as the user gave it ("0.1%" or "0.05")
+  SamplingScheme scheme = SamplingScheme::all;
+  std::uint64_t workpiece_hash = 0;
+
+  std::vector<std::uint32_t> tri_n;          // lattice size per triangle; 0 = not sampled
+  std::vector<std::uint64_t> tri_first;      // first own (non-corner) sample of each triangle
+  std::vector<std::uint32_t> vertex_sample;  // sample of each mesh vertex, or kNoSample
+
+  std::vector<Vec3> positions;           // per sample
+  std::vector<std::uint32_t> owner;      // per sample: a triangle it lies on
+  std::vector<std::uint32_t> lattice_i;  // per sample: lattice coordinates in owner
+  std::vector<std::uint32_t> lattice_j;
+
+  std::size_t sample_count() const { return positions.size(); }
+  // Sample index of lattice point (i, j) of triangle t (t must be sampled).
+  std::uint64_t sample_at(std::size_t t, std::uint32_t i, std::uint32_t j) const;
+};
+
+struct SamplingReport {
+  std::uint64_t triangles = 0;
+  std::uint64_t samples = 0;
+  std::uint64_t small_triangles = 0;       // n' rounds below 2: vertices only (I) or skipped (II)
+  std::uint64_t degenerate_triangles = 0;  // zero area
+  double surface_area = 0;
+};
+
+// What sampling a mesh at a step gives, worked out before any sample exists: each
+// triangle's lattice size (scheme I lifts n < 2 to 2, corners only; scheme II leaves such
+// a triangle unsampled, 0) and the report's triangle counts. The memory guard reads the
+// sample count from it; sample_mesh then builds on it rather than working it out again.
+struct SamplingPlan {
+  double step = 0;
+  SamplingScheme scheme = SamplingScheme::all;
+  std::vector<std::uint32_t> lattice_sizes;  // per triangle; 0 = not sampled
+  SamplingReport counts;                     // small_triangles, degenerate_triangles, surface_area
+};
+
+SamplingPlan plan_sampling(const Mesh& mesh, double step, SamplingScheme scheme);
+
+// Samples that sample_mesh would produce from the plan, computed without allocating them.
+std::uint64_t predicted_sample_count(const Mesh& mesh, const SamplingPlan& plan);
+
+// The plan must be plan_sampling(workpiece, ...).
+SampleSet sample_mesh(Mesh workpiece, SamplingPlan plan, SamplingReport* report = nullptr);
+// Plans and samples.
+SampleSet sample_mesh(Mesh workpiece, double step, SamplingScheme scheme,
+                      SamplingReport* report = nullptr);
+
+}  // namespace ncv

@@ -1,0 +1,294 @@
+#include "search/grid_builder.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <numeric>
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include "geometry/triangle_box_overlap.hpp"
+#include "util/error.hpp"
+
+namespace ncv {
+namespace {
+
+struct Layout {
+  Vec3 origin;
+  double h = 0;
+  std::array<std::uint32_t, 3> dims{1, 1, 1};
+  double slack = 0;
+
+  double bound(int axis, std::int64_t i) const { return origin[axis] + static_cast<double>(i) * h; }
+  std::uint64_t cell(std::int64_t i, std::int64_t j, std::int64_t k) const {
+    return (static_cast<std::uint64_t>(k) * dims[1] + static_cast<std::uint64_t>(j)) * dims[0] +
+           static_cast<std::uint64_t>(i);
+  }
+  std::int64_t clamped_index(int axis, double coordinate) const {
+    const double index = std::floor((coordinate - origin[axis]) / h);
+    return static_cast<std::int64_t>(std::clamp(index, 0.0, dims[axis] - 1.0));
+  }
+};
+
+// Cells per axis (as doubles, they may not fit any integer yet) and the grid box centred on
+// the part with at least h / 100 to spare on each side.
+std::array<double, 3> cells_per_axis(const BoundingBox& part, double h) {
+  std::array<double, 3> n{};
+  for (int axis = 0; axis < 3; ++axis) {
+    n[axis] = std::max(1.0, std::ceil(part.extent()[axis] / h + 0.02));
+  }
+  return n;
+}
+
+Layout make_layout(const BoundingBox& part, double h, const std::array<double, 3>& n) {
+  Layout layout;
+  layout.h = h;
+  double scale = h;
+  for (int axis = 0; axis < 3; ++axis) {
+    layout.dims[axis] = static_cast<std::uint32_t>(n[axis]);
+    layout.origin[axis] = part.min[axis] - 0.5 * (n[axis] * h - part.extent()[axis]);
+    scale = std::max(
+        {scale, std::fabs(layout.origin[axis]), std::fabs(layout.bound(axis, layout.dims[axis]))});
+  }
+  layout.slack = std::ldexp(scale, -30);
+  return layout;
+}
+
+// The candidate cells of one triangle: per column along the dominant axis k of its normal,
+// the cells within the plane's span over the (grown) column, widened by the plane's
+// possible direction error (relative 1e-4 of the triangle's size; is_degenerate_triangle
+// excludes the triangles whose normal could be worse). Degenerate triangles take every
+// cell of their bounding box.
+class Candidates {
+ public:
+  Candidates(const Layout& layout, const TriangleCorners& t) : layout_(layout) {
+    BoundingBox box;
+    for (const Vec3& corner : t) box.extend(corner);
+    for (int axis = 0; axis < 3; ++axis) {
+      lo_[axis] = layout.clamped_index(axis, box.min[axis] - layout.slack);
+      hi_[axis] = layout.clamped_index(axis, box.max[axis] + layout.slack);
+    }
+    normal_ = cross(t[1] - t[0], t[2] - t[0]);
+    planar_ = !is_degenerate_triangle(t[0], t[1], t[2]);
+    const Vec3 magnitude{std::fabs(normal_.x), std::fabs(normal_.y), std::fabs(normal_.z)};
+    k_ = magnitude.x >= magnitude.y && magnitude.x >= magnitude.z
+             ? 0
+             : (magnitude.y >= magnitude.z ? 1 : 2);
+    offset_ = dot(normal_, t[0]);
+    const Vec3 extent = box.extent();
+    pad_ = 1e-4 * std::max({extent.x, extent.y, extent.z}) + 2 * layout.slack;
+  }
+
+  // visit(i, j, k) for every candidate cell, column by column.
+  template <class Visit>
+  void for_each(Visit&& visit) const {
+    const int a = (k_ + 1) % 3;
+    const int b = (k_ + 2) % 3;
+    std::array<std::int64_t, 3> c{};
+    for (c[a] = lo_[a]; c[a] <= hi_[a]; ++c[a]) {
+      for (c[b] = lo_[b]; c[b] <= hi_[b]; ++c[b]) {
+        const auto [first, last] = column(c[a], c[b]);
+        for (c[k_] = first; c[k_] <= last; ++c[k_]) visit(c[0], c[1], c[2]);
+      }
+    }
+  }
+
+  std::uint64_t count() const {
+    const int a = (k_ + 1) % 3;
+    const int b = (k_ + 2) % 3;
+    std::uint64_t total = 0;
+    for (std::int64_t ia = lo_[a]; ia <= hi_[a]; ++ia) {
+      for (std::int64_t ib = lo_[b]; ib <= hi_[b]; ++ib) {
+        const auto [first, last] = column(ia, ib);
+        if (last >= first) total += static_cast<std::uint64_t>(last - first + 1);
+      }
+    }
+    return total;
+  }
+
+ private:
+  std::pair<std::int64_t, std::int64_t> column(std::int64_t ia, std::int64_t ib) const {
+    if (!planar_) return {lo_[k_], hi_[k_]};
+    const int a = (k_ + 1) % 3;
+    const int b = (k_ + 2) % 3;
+    double low = std::numeric_limits<double>::infinity();
+    double high = -low;
+    for (std::int64_t da = 0; da <= 1; ++da) {
+      for (std::int64_t db = 0; db <= 1; ++db) {
+        const double xa = layout_.bound(a, ia + da) + (da ? 1 : -1) * layout_.slack;
+        const double xb = layout_.bound(b, ib + db) + (db ? 1 : -1) * layout_.slack;
+        const double xk = (offset_ - normal_[a] * xa - normal_[b] * xb) / normal_[k_];
+        low = std::min(low, xk);
+        high = std::max(high, xk);
+      }
+    }
+    return {std::max(lo_[k_], layout_.clamped_index(k_, low - pad_)),
+            std::min(hi_[k_], layout_.clamped_index(k_, high + pad_))};
+  }
+
+  const Layout& layout_;
+  std::array<std::int64_t, 3> lo_{}, hi_{};
+  Vec3 normal_;
+  double offset_ = 0;
+  double pad_ = 0;
+  int k_ = 0;
+  bool planar_ = true;
+};
+
+// Calls visit(cell) for every cell the triangle touches, in candidate order.
+template <class Visit>
+void for_each_touched_cell(const Layout& layout, const TriangleCorners& t, Visit&& visit) {
+  const double half = 0.5 * layout.h + layout.slack;
+  Candidates(layout, t).for_each([&](std::int64_t i, std::int64_t j, std::int64_t k) {
+    const Vec3 centre{layout.origin.x + (static_cast<double>(i) + 0.5) * layout.h,
+                      layout.origin.y + (static_cast<double>(j) + 0.5) * layout.h,
+                      layout.origin.z + (static_cast<double>(k) + 0.5) * layout.h};
+    if (triangle_box_overlap(centre, {half, half, half}, t[0], t[1], t[2])) {
+      visit(layout.cell(i, j, k));
+    }
+  });
+}
+
+// Whether the candidate cells of all triangles stay within the budget; stops counting once
+// they do not (the verdict does not depend on which thread saw the excess first).
+bool candidates_within(const NominalSurface& nominal, const Layout& layout, std::uint64_t budget) {
+  std::atomic<std::uint64_t> total{0};
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nominal.triangle_count(), 256),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      if (total.load(std::memory_order_relaxed) > budget) return;
+                      std::uint64_t part = 0;
+                      for (std::size_t t = range.begin(); t != range.end(); ++t) {
+                        part += Candidates(layout, nominal.corners(t)).count();
+                      }
+                      total.fetch_add(part, std::memory_order_relaxed);
+                    });
+  return total.load() <= budget;
+}
+
+Layout choose_layout(const NominalSurface& nominal, double h, GridStatistics& stats) {
+  const auto triangles = static_cast<std::uint64_t>(nominal.triangle_count());
+  const double cell_budget =
+      static_cast<double>(std::max(kCellsPerTriangle * triangles, kMinCellBudget));
+  const std::uint64_t reference_budget =
+      std::max(kReferencesPerTriangle * triangles, kMinReferenceBudget);
+  const BoundingBox& part = nominal.local_bounds();
+  // No axis can ever use more than 2^31 cells (the cell budget is below that), so a cell
+  // smaller than the part's extent / 2^31 grows at once: the cell counts below stay finite.
+  const Vec3 extent = part.extent();
+  h = std::max(h, std::max({extent.x, extent.y, extent.z}) * 0x1p-31);
+  for (;; ++stats.growth_steps) {
+    const std::array<double, 3> n = cells_per_axis(part, h);
+    const double cells = n[0] * n[1] * n[2];
+    if (cells > cell_budget) {
+      h *= std::max(kGrowth, std::cbrt(cells / cell_budget));
+      continue;
+    }
+    const Layout layout = make_layout(part, h, n);
+    if (candidates_within(nominal, layout, reference_budget)) return layout;
+    h *= kGrowth;
+  }
+}
+
+// Triangle-major references in fixed chunks of triangles (so the result does not depend on
+// the thread count): chunk c holds, for its triangles in order, the cells each touches in
+// ascending candidate order, and how many. One exact test per candidate.
+struct ReferenceChunk {
+  std::vector<std::uint32_t> cells;
+  std::vector<std::uint32_t> counts;  // per triangle of the chunk
+};
+
+constexpr std::size_t kChunkTriangles = 4096;
+
+std::vector<ReferenceChunk> touched_cells(const NominalSurface& nominal, const Layout& layout) {
+  const std::size_t triangles = nominal.triangle_count();
+  std::vector<ReferenceChunk> chunks((triangles + kChunkTriangles - 1) / kChunkTriangles);
+  tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
+    ReferenceChunk& chunk = chunks[c];
+    const std::size_t end = std::min(triangles, (c + 1) * kChunkTriangles);
+    chunk.counts.reserve(end - c * kChunkTriangles);
+    for (std::size_t t = c * kChunkTriangles; t < end; ++t) {
+      const std::size_t before = chunk.cells.size();
+      for_each_touched_cell(layout, nominal.corners(t), [&](std::uint64_t cell) {
+        chunk.cells.push_back(static_cast<std::uint32_t>(cell));
+      });
+      chunk.counts.push_back(static_cast<std::uint32_t>(chunk.cells.size() - before));
+    }
+    chunk.cells.shrink_to_fit();
+  });
+  return chunks;
+}
+
+// Counting sort of the references by cell; scanning triangles in order keeps every cell's
+// list ascending.
+void fill_cell_lists(UniformGrid& grid, const std::vector<ReferenceChunk>& chunks) {
+  grid.cell_offsets.assign(grid.cell_count() + 1, 0);
+  std::uint64_t references = 0;
+  for (const ReferenceChunk& chunk : chunks) {
+    for (std::uint32_t cell : chunk.cells) ++grid.cell_offsets[cell + 1];
+    references += chunk.cells.size();
+  }
+  std::partial_sum(grid.cell_offsets.begin(), grid.cell_offsets.end(), grid.cell_offsets.begin());
+  std::vector<std::uint64_t> cursor(grid.cell_offsets.begin(), grid.cell_offsets.end() - 1);
+  grid.cell_triangles.resize(references);
+  std::uint32_t t = 0;
+  for (const ReferenceChunk& chunk : chunks) {
+    std::size_t r = 0;
+    for (std::uint32_t count : chunk.counts) {
+      for (std::uint32_t k = 0; k < count; ++k, ++r)
+        grid.cell_triangles[cursor[chunk.cells[r]]++] = t;
+      ++t;
+    }
+  }
+}
+
+void summarise(const UniformGrid& grid, std::size_t triangles, GridStatistics& stats) {
+  stats.dims = grid.dims;
+  stats.cells = grid.cell_count();
+  stats.references = grid.cell_triangles.size();
+  stats.references_per_triangle =
+      static_cast<double>(stats.references) / static_cast<double>(triangles);
+  for (std::size_t c = 0; c < stats.cells; ++c) {
+    const std::uint64_t size = grid.cell_offsets[c + 1] - grid.cell_offsets[c];
+    stats.empty_cells += size == 0;
+    stats.max_cell_triangles = std::max(stats.max_cell_triangles, size);
+  }
+  stats.bytes = grid.cell_offsets.size() * sizeof(std::uint64_t) +
+                grid.cell_triangles.size() * sizeof(std::uint32_t);
+  stats.cell_size = grid.cell_size;
+}
+
+}  // namespace
+
+double default_cell_size(const NominalSurface& nominal) {
+  double area = 0;
+  for (const TriangleCorners& t : nominal.corners())
+    area += 0.5 * norm(cross(t[1] - t[0], t[2] - t[0]));
+  const auto triangles = static_cast<double>(nominal.triangle_count());
+  const double mean_area = area / triangles;
+  if (mean_area > 0) return std::sqrt(4.0 * mean_area / std::sqrt(3.0));
+  const double diagonal = nominal.local_bounds().diagonal();
+  return diagonal > 0 ? diagonal / std::cbrt(triangles) : 1.0;
+}
+
+UniformGrid build_uniform_grid(const NominalSurface& nominal, const GridOptions& options,
+                               GridStatistics* statistics) {
+  if (options.cell_size != 0 && !(std::isfinite(options.cell_size) && options.cell_size > 0)) {
+    throw UsageError(fmt::format("grid cell size {} is not a positive number", options.cell_size));
+  }
+  GridStatistics stats;
+  stats.requested_cell_size =
+      options.cell_size > 0 ? options.cell_size : default_cell_size(nominal);
+  const Layout layout = choose_layout(nominal, stats.requested_cell_size, stats);
+
+  UniformGrid grid;
+  grid.origin = layout.origin;
+  grid.cell_size = layout.h;
+  grid.dims = layout.dims;
+  fill_cell_lists(grid, touched_cells(nominal, layout));
+  summarise(grid, nominal.triangle_count(), stats);
+  if (statistics) *statistics = stats;
+  return grid;
+}
+
+}  // namespace ncv

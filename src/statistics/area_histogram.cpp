@@ -1,0 +1,123 @@
+#include "statistics/area_histogram.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "util/error.hpp"
+#include "util/ordered_reduce.hpp"
+
+namespace ncv {
+
+namespace {
+
+constexpr std::size_t kPatchBlock = 1 << 16;
+
+// Per-block accumulator: the bins, then below_range, above_range and the total area.
+using BinSums = std::vector<double>;
+
+// The bins' edges, and the bin holding a value: bin k holds (edge k, edge k + 1], bin 0
+// also its lower edge. The quotient by the bin width guesses the bin; the edges (computed by
+// lerp, not exactly lo + k * width) then correct the guess by a step at most, which is
+// what a binary search over them would find.
+class BinEdges {
+ public:
+  explicit BinEdges(std::vector<double> edges)
+      : edges_(std::move(edges)),
+        per_unit_(static_cast<double>(edges_.size() - 1) / (edges_.back() - edges_.front())) {}
+
+  double operator[](std::size_t k) const { return edges_[k]; }
+  double front() const { return edges_.front(); }
+  double back() const { return edges_.back(); }
+  std::size_t bins() const { return edges_.size() - 1; }
+
+  std::size_t bin_of(double v) const {
+    const double guess = (v - edges_.front()) * per_unit_;
+    const double top = static_cast<double>(bins() - 1);
+    // The negated test also sends a NaN quotient (a single-valued range) to bin 0.
+    std::size_t k = !(guess > 0) ? 0 : static_cast<std::size_t>(std::min(guess, top));
+    while (k > 0 && v <= edges_[k]) --k;
+    while (k + 1 < bins() && v > edges_[k + 1]) ++k;
+    return k;
+  }
+
+ private:
+  std::vector<double> edges_;
+  double per_unit_;
+};
+
+// Walks the bins the patch spans, giving each the growth of the patch's distribution
+// function across it.
+void add_patch(BinSums& sums, const BinEdges& edges, const LinearPatch& p) {
+  const std::size_t bins = edges.bins();
+  double& below = sums[bins];
+  double& above = sums[bins + 1];
+  sums[bins + 2] += p.area;
+  if (p.hi < edges.front()) {
+    below += p.area;
+    return;
+  }
+  if (p.lo > edges.back()) {
+    above += p.area;
+    return;
+  }
+  const std::size_t first = edges.bin_of(std::max(p.lo, edges.front()));
+  const std::size_t last = edges.bin_of(std::min(p.hi, edges.back()));
+  if (first == last && p.lo >= edges.front() && p.hi <= edges.back()) {
+    sums[first] += p.area;
+    return;
+  }
+  double done = area_below(p, edges.front());
+  below += done;
+  for (std::size_t k = first; k < last; ++k) {
+    const double upto = area_at_most(p, edges[k + 1]);
+    sums[k] += upto - done;
+    done = upto;
+  }
+  const double upto = area_at_most(p, edges.back());
+  sums[last] += upto - done;
+  above += p.area - upto;
+}
+
+}  // namespace
+
+double Histogram::edge(std::size_t k) const {
+  return std::lerp(range.lo, range.hi, static_cast<double>(k) / static_cast<double>(bin_count()));
+}
+
+Histogram area_histogram(std::span<const LinearPatch> patches, ValueRange range,
+                         std::uint32_t bins) {
+  if (bins == 0) throw UsageError("a histogram needs at least one bin");
+  if (!std::isfinite(range.lo) || !std::isfinite(range.hi) || range.lo > range.hi) {
+    throw UsageError(
+        fmt::format("histogram range {}:{} is not a finite interval", range.lo, range.hi));
+  }
+  Histogram histogram;
+  histogram.range = range;
+  histogram.area.resize(range.lo == range.hi ? 1 : bins);
+  const std::size_t count = histogram.bin_count();
+  std::vector<double> edge_values(count + 1);
+  for (std::size_t k = 0; k <= count; ++k) edge_values[k] = histogram.edge(k);
+  const BinEdges edges(std::move(edge_values));
+
+  BinSums sums = ordered_reduce(
+      patches.size(), kPatchBlock, BinSums(count + 3, 0.0),
+      [&](std::size_t begin, std::size_t end) {
+        BinSums part(count + 3, 0.0);
+        for (std::size_t i = begin; i < end; ++i) add_patch(part, edges, patches[i]);
+        return part;
+      },
+      [](BinSums& acc, const BinSums& part) {
+        for (std::size_t k = 0; k < acc.size(); ++k) acc[k] += part[k];
+      });
+  std::copy_n(sums.begin(), count, histogram.area.begin());
+  histogram.below_range = sums[count];
+  histogram.above_range = sums[count + 1];
+  histogram.total_area = sums[count + 2];
+  return histogram;
+}
+
+}  // namespace ncv

@@ -1,0 +1,43 @@
+// Area-weighted histogram of a piecewise-linear field: bin k holds the exact area of the
+// surface where the interpolated value lies in it, from the closed-form distribution of
+// each linear patch, so the bars agree with the clipped tolerance areas.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "geometry/linear_patch.hpp"
+
+namespace ncv {
+
+struct ValueRange {
+  double lo = 0;
+  double hi = 0;
+};
+
+struct HistogramOptions {
+  std::uint32_t bins = 64;
+  std::optional<ValueRange> range;  // default: [d_min, d_max] of the data
+};
+
+// Bin 0 is [lo, edge 1], bin k > 0 is (edge k, edge k+1]: the area at a value equal to an
+// edge goes to the lower bin, matching area_at_most.
+struct Histogram {
+  ValueRange range;
+  std::vector<double> area;  // per bin
+  double below_range = 0;    // area with values < range.lo
+  double above_range = 0;    // area with values > range.hi
+  double total_area = 0;     // of all patches, inside the range or not
+
+  std::size_t bin_count() const { return area.size(); }
+  double edge(std::size_t k) const;
+};
+
+// A degenerate range (lo == hi) gets a single bin. Throws UsageError for zero bins or a
+// range that is not finite and ordered.
+Histogram area_histogram(std::span<const LinearPatch> patches, ValueRange range,
+                         std::uint32_t bins);
+
+}  // namespace ncv

@@ -1,0 +1,41 @@
+// The stats report: ErrorStatistics and the out-of-tolerance regions of one part as a
+// readable text table, as JSON (stable keys, documented in docs/REPORTS.md) or as CSV
+// (one header line and one row, so the rows of many parts concatenate into one table).
+// Numbers are written in their shortest round-tripping form.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "files/distance_file.hpp"
+#include "statistics/error_regions.hpp"
+#include "statistics/error_statistics.hpp"
+
+namespace ncv {
+
+struct PartReport {
+  std::string part;  // the workpiece's file stem
+  const DistanceSet* distances = nullptr;
+  ErrorStatistics statistics;
+  std::vector<ErrorRegion> regions;  // empty without a tolerance
+  std::size_t listed_regions = 20;   // regions written out (all are counted)
+};
+
+PartReport make_part_report(const DistanceSet& distances, const std::optional<Tolerance>& tolerance,
+                            const HistogramOptions& histogram);
+
+nlohmann::json report_json(const PartReport& report);
+std::string report_text(const PartReport& report);
+std::string report_csv_header();
+std::string report_csv_row(const PartReport& report);
+
+enum class ReportFormat { text, json, csv };
+ReportFormat parse_report_format(const std::string& name);  // "text", "json", "csv"
+// The whole report in one format; csv_header adds the CSV header line.
+std::string format_report(const PartReport& report, ReportFormat format, bool csv_header = true);
+
+// The exit status the verdict implies: 0 pass or no tolerance, 1 out of tolerance.
+int verdict_status(const PartReport& report);
+
+}  // namespace ncv

@@ -1,0 +1,109 @@
+#include "steps/distance_step.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+
+#include "sampling/sample_normals.hpp"
+#include "util/error.hpp"
+#include "util/progress.hpp"
+#include "util/stopwatch.hpp"
+
+namespace ncv {
+namespace {
+
+// Share of the smaller box's volume inside the other, with boxes grown by 1 % of the
+// larger diagonal so flat parts still have a volume.
+double overlap_share(const BoundingBox& a, const BoundingBox& b) {
+  const double pad = 0.01 * std::max(a.diagonal(), b.diagonal());
+  double inter = 1, va = 1, vb = 1;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double lo = std::max(a.min[axis], b.min[axis]) - pad;
+    const double hi = std::min(a.max[axis], b.max[axis]) + pad;
+    inter *= std::max(0.0, hi - lo);
+    va *= a.max[axis] - a.min[axis] + 2 * pad;
+    vb *= b.max[axis] - b.min[axis] + 2 * pad;
+  }
+  return inter / std::min(va, vb);
+}
+
+// What the two files' geometry can tell about whether they belong together. Certain: a
+// workpiece whose every point is farther from the nominal than the size of either part is
+// not a machining of it in its frame; no tolerance verdict on it means anything, and an
+// "out of tolerance" would send someone to rework a part that was never measured, so it is
+// refused. Only suspicious (warned, measured anyway): little overlap, no overlap at close
+// range, very different sizes, or the nominal itself given as the workpiece (zero
+// everywhere; a legitimate self-check, a mix-up otherwise).
+void check_belong_together(const SampleSet& samples, const NominalGrid& grid) {
+  const BoundingBox workpiece = bounding_box(samples.workpiece);
+  const BoundingBox nominal = bounding_box(grid.mesh);
+  refuse_if_apart(workpiece, samples.workpiece_source, nominal, grid.nominal_source);
+  if (samples.workpiece_hash == grid.nominal_hash) {
+    spdlog::warn("the workpiece ({}) is the nominal ({}) itself: every distance is zero",
+                 samples.workpiece_source, grid.nominal_source);
+  }
+  const double share = overlap_share(workpiece, nominal);
+  if (share < 0.5) {
+    spdlog::warn(
+        "the workpiece ({}) and the nominal ({}) barely overlap ({:.0f} % of the "
+        "smaller bounding box): a wrong file, unit or coordinate frame?",
+        samples.workpiece_source, grid.nominal_source, 100 * share);
+  }
+  const double ratio = workpiece.diagonal() / std::max(nominal.diagonal(), 1e-300);
+  if (ratio > 5 || ratio < 0.2) {
+    spdlog::warn("the workpiece is {:.3g} times the size of the nominal: a unit mismatch?", ratio);
+  }
+}
+
+}  // namespace
+
+void refuse_if_apart(const BoundingBox& workpiece, const std::string& workpiece_source,
+                     const BoundingBox& nominal, const std::string& nominal_source) {
+  const double gap = box_gap(workpiece, nominal);
+  const double size = std::max(workpiece.diagonal(), nominal.diagonal());
+  if (gap > size) {
+    throw InputError(workpiece_source,
+                     fmt::format("the workpiece lies {:.6g} from the nominal {}, farther than "
+                                 "the size of either part ({:.6g}): they do not belong together "
+                                 "(a wrong file or coordinate frame?)",
+                                 gap, nominal_source, size));
+  }
+}
+
+DistanceSet measure_distances(SampleSet samples, const NominalGrid& grid, const SearchGrid& search,
+                              const DistanceStepOptions& options, double* seconds) {
+  check_belong_together(samples, grid);
+  const SignMethod method = resolve_sign_method(*grid.nominal, options.sign);
+  const std::vector<Vec3> normals =
+      method == SignMethod::paper ? sample_normals(samples) : std::vector<Vec3>{};
+
+  Stopwatch clock;
+  SearchStatistics statistics;
+  Progress progress("distance", samples.sample_count());
+  DistanceSet result;
+  result.field = compute_signed_distances(
+      *grid.nominal, options.brute_force ? nullptr : &search, samples.positions, normals, method,
+      &statistics, [&](std::size_t done, std::size_t) { progress.update(done); });
+  progress.finish();
+  if (seconds) *seconds = clock.seconds();
+
+  result.samples = std::move(samples);
+  result.nominal = {grid.nominal_source, grid.nominal_hash, grid.mesh.triangle_count(),
+                    bounding_box(grid.mesh)};
+  result.sign_method = std::string(sign_method_name(method));
+  result.search = options.brute_force ? "brute-force" : "grid";
+  result.triangles_tested_per_sample = statistics.triangles_per_query();
+  return result;
+}
+
+void log_distance_report(const DistanceSet& d, double seconds) {
+  const auto samples = static_cast<double>(d.samples.sample_count());
+  spdlog::info(
+      "{} samples against {} nominal triangles in {:.3f} s ({:.3g} samples/s); {} "
+      "search, {:.1f} triangles tested per sample; sign by {}",
+      d.samples.sample_count(), d.nominal.triangles, seconds, samples / std::max(seconds, 1e-9),
+      d.search, d.triangles_tested_per_sample, d.sign_method);
+}
+
+}  // namespace ncv

@@ -1,0 +1,28 @@
+#include "util/logging.hpp"
+
+#include <spdlog/sinks/stdout_sinks.h>
+#include <spdlog/spdlog.h>
+
+namespace ncv {
+
+void setup_logging(Verbosity verbosity) {
+  auto logger = spdlog::get("ncverify");
+  if (!logger) {
+    logger = spdlog::stderr_logger_st("ncverify");
+    logger->set_pattern("ncverify: %^%l%$: %v");
+    spdlog::set_default_logger(logger);
+  }
+  switch (verbosity) {
+    case Verbosity::quiet:
+      logger->set_level(spdlog::level::warn);
+      break;
+    case Verbosity::normal:
+      logger->set_level(spdlog::level::info);
+      break;
+    case Verbosity::verbose:
+      logger->set_level(spdlog::level::debug);
+      break;
+  }
+}
+
+}  // namespace ncv

@@ -1,0 +1,45 @@
+#include "util/memory_guard.hpp"
+
+#include <fmt/format.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include "util/error.hpp"
+
+namespace ncv {
+
+std::uint64_t physical_memory_bytes() {
+  const long pages = sysconf(_SC_PHYS_PAGES);
+  const long page_size = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page_size <= 0) return std::uint64_t{8} << 30;
+  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_size);
+}
+
+std::uint64_t peak_memory_bytes() {
+  struct rusage usage {};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;  // Linux reports kB
+}
+
+std::string format_bytes(std::uint64_t bytes) {
+  const double value = static_cast<double>(bytes);
+  if (value >= 1e9) return fmt::format("{:.1f} GB", value / 1e9);
+  if (value >= 1e6) return fmt::format("{:.1f} MB", value / 1e6);
+  if (value >= 1e3) return fmt::format("{:.1f} kB", value / 1e3);
+  return fmt::format("{} B", bytes);
+}
+
+void check_memory_budget(const std::string& what, double bytes, bool force) {
+  const std::uint64_t budget = physical_memory_bytes() / 2;
+  if (force || bytes <= static_cast<double>(budget)) return;
+  // The estimate can exceed 2^64 (a step of 1e-9 on a large part), where converting it to
+  // an integer is undefined behaviour: it is written as a double.
+  const std::string needed = bytes < 1e12 ? format_bytes(static_cast<std::uint64_t>(bytes))
+                                          : fmt::format("{:.3g} GB", bytes / 1e9);
+  throw UsageError(
+      fmt::format("{} would need about {} of memory (this machine allows {}); "
+                  "use a larger step, or --force",
+                  what, needed, format_bytes(budget)));
+}
+
+}  // namespace ncv

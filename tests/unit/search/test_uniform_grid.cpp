@@ -1,0 +1,342 @@
+// The background grid: the exact triangle-box test against a clipping oracle, complete and
+// ascending cell lists, the memory bounds on hostile meshes, the thread-count invariance
+// of the build, and the validation of grids read from untrusted files.
+#include <catch2/catch.hpp>
+
+#include <random>
+
+#include <tbb/global_control.h>
+
+#include "geometry/triangle_box_overlap.hpp"
+#include "nominal_fixtures.hpp"
+#include "search/grid_builder.hpp"
+#include "util/error.hpp"
+
+namespace {
+
+using ncv::Vec3;
+namespace fx = ncv::fixtures;
+
+// Sutherland-Hodgman: clip the triangle by the six (closed) half-spaces of the box; they
+// meet when anything is left.
+bool clipping_overlap(Vec3 centre, Vec3 half, Vec3 a, Vec3 b, Vec3 c) {
+  std::vector<Vec3> polygon{a, b, c};
+  for (int axis = 0; axis < 3; ++axis) {
+    for (double side : {-1.0, 1.0}) {
+      const double limit = centre[axis] + side * half[axis];
+      const auto inside = [&](Vec3 p) { return side * (p[axis] - limit) <= 0; };
+      std::vector<Vec3> clipped;
+      for (std::size_t i = 0; i < polygon.size(); ++i) {
+        const Vec3 p = polygon[i];
+        const Vec3 q = polygon[(i + 1) % polygon.size()];
+        if (inside(p)) clipped.push_back(p);
+        if (inside(p) != inside(q)) {
+          const double t = (limit - p[axis]) / (q[axis] - p[axis]);
+          Vec3 crossing = p + t * (q - p);
+          crossing[axis] = limit;
+          clipped.push_back(crossing);
+        }
+      }
+      polygon = std::move(clipped);
+      if (polygon.empty()) return false;
+    }
+  }
+  return true;
+}
+
+ncv::NominalSurface nominal_of(ncv::Mesh mesh) {
+  return ncv::NominalSurface(std::move(mesh), "test");
+}
+
+// Every cell the triangle touches (exact test on the cell's own bounds) lists it, every
+// list is strictly ascending, and nothing is listed in a cell it does not come near.
+void check_lists_complete(const ncv::NominalSurface& nominal, const ncv::UniformGrid& grid) {
+  const double h = grid.cell_size;
+  const Vec3 half{0.5 * h, 0.5 * h, 0.5 * h};
+  const Vec3 grown{0.5 * h * (1 + 1e-6), 0.5 * h * (1 + 1e-6), 0.5 * h * (1 + 1e-6)};
+  for (std::uint32_t k = 0; k < grid.dims[2]; ++k) {
+    for (std::uint32_t j = 0; j < grid.dims[1]; ++j) {
+      for (std::uint32_t i = 0; i < grid.dims[0]; ++i) {
+        const std::uint64_t cell = grid.cell_index(i, j, k);
+        const Vec3 lo{grid.cell_bound(0, i), grid.cell_bound(1, j), grid.cell_bound(2, k)};
+        const Vec3 centre = lo + half;
+        const auto first =
+            grid.cell_triangles.begin() + static_cast<std::ptrdiff_t>(grid.cell_offsets[cell]);
+        const auto last =
+            grid.cell_triangles.begin() + static_cast<std::ptrdiff_t>(grid.cell_offsets[cell + 1]);
+        REQUIRE(std::adjacent_find(first, last, std::greater_equal<>()) == last);
+        for (std::uint32_t t = 0; t < nominal.triangle_count(); ++t) {
+          const auto& [a, b, c] = nominal.corners(t);
+          const bool listed = std::binary_search(first, last, t);
+          if (ncv::triangle_box_overlap(centre, half, a, b, c)) REQUIRE(listed);
+          if (listed) REQUIRE(ncv::triangle_box_overlap(centre, grown, a, b, c));
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("triangle-box overlap agrees with clipping on random cases", "[grid]") {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_real_distribution<double> size(0.05, 1.0);
+  int overlaps = 0;
+  const int cases = 50000;
+  for (int i = 0; i < cases; ++i) {
+    const Vec3 centre{unit(rng), unit(rng), unit(rng)};
+    const Vec3 half{size(rng), size(rng), size(rng)};
+    const double scale = i % 3 == 0 ? 0.3 : 2.0;  // small triangles and large ones
+    const Vec3 a{unit(rng), unit(rng), unit(rng)};
+    const Vec3 b = a + scale * Vec3{unit(rng), unit(rng), unit(rng)};
+    const Vec3 c = a + scale * Vec3{unit(rng), unit(rng), unit(rng)};
+    const bool expected = clipping_overlap(centre, half, a, b, c);
+    REQUIRE(ncv::triangle_box_overlap(centre, half, a, b, c) == expected);
+    overlaps += expected;
+  }
+  // Both outcomes well represented.
+  CHECK(overlaps > cases / 5);
+  CHECK(overlaps < cases * 4 / 5);
+}
+
+TEST_CASE("triangle-box overlap on touching and edge-separated cases", "[grid]") {
+  const Vec3 centre{0, 0, 0}, half{1, 1, 1};
+  const auto overlap = [&](Vec3 a, Vec3 b, Vec3 c) {
+    return ncv::triangle_box_overlap(centre, half, a, b, c);
+  };
+  CHECK(overlap({-0.5, -0.5, 1}, {0.5, -0.5, 1}, {0, 0.5, 1}));  // lies on the top face
+  CHECK_FALSE(overlap({-0.5, -0.5, 1 + 1e-12}, {0.5, -0.5, 1 + 1e-12}, {0, 0.5, 1 + 1e-12}));
+  CHECK(overlap({1, 1, 1}, {3, 1, 1}, {1, 3, 2}));     // only a corner in common
+  CHECK(overlap({-5, -5, 0}, {5, -5, 0}, {0, 5, 0}));  // slices through, corners all outside
+  // Plane and box axes overlap; only the edge x y-axis separates.
+  CHECK_FALSE(overlap({2.6, 0, 0}, {0, 0, 2.6}, {3, 0, 3}));
+  CHECK(overlap({1.9, 0, 0}, {0, 0, 1.9}, {3, 0, 3}));
+  // Degenerate triangles: a segment through the box, a segment beside it, a point inside.
+  CHECK(overlap({-3, 0.5, 0.5}, {3, 0.5, 0.5}, {0, 0.5, 0.5}));
+  CHECK(overlap({1.5, 0, -3}, {-1.5, 0, 3}, {0, 0, 0}));
+  CHECK_FALSE(overlap({2.1, 0, 0}, {0, 0, 2.1}, {1.05, 0, 1.05}));
+  CHECK(overlap({0.1, 0.2, 0.3}, {0.1, 0.2, 0.3}, {0.1, 0.2, 0.3}));
+}
+
+TEST_CASE("default cell size is the paper's equilateral edge", "[grid]") {
+  // A regular tetrahedron of edge 2: every face is the equilateral triangle of edge 2.
+  ncv::Mesh tetra;
+  tetra.vertices = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+  for (Vec3& v : tetra.vertices) v = v * (1 / std::sqrt(2.0));
+  tetra.triangles = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
+  CHECK(ncv::default_cell_size(nominal_of(tetra)) == Approx(2.0).epsilon(1e-12));
+}
+
+TEST_CASE("grid lists every triangle in every cell it touches", "[grid]") {
+  std::mt19937_64 rng(5);
+  SECTION("random soup") {
+    const auto nominal = nominal_of(fx::random_soup(rng, 300, 0.2));
+    const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal);
+    grid.validate(nominal, "built");
+    check_lists_complete(nominal, grid);
+  }
+  SECTION("axis-aligned faces on cell boundaries") {
+    // Unit cells on a lattice solid: many faces lie exactly on cell planes.
+    const auto nominal = nominal_of(fx::pocketed_block().mesh(1.0));
+    ncv::GridOptions options;
+    options.cell_size = 0.5;
+    ncv::GridStatistics stats;
+    const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal, options, &stats);
+    CHECK(stats.growth_steps == 0);
+    CHECK(grid.cell_size == 0.5);
+    check_lists_complete(nominal, grid);
+  }
+  SECTION("degenerate triangles") {
+    ncv::Mesh mesh = fx::box({0, 0, 0}, {1, 1, 1});
+    mesh.vertices.push_back({0.2, 0.3, 0.4});
+    mesh.vertices.push_back({0.8, 0.6, 0.4});
+    mesh.vertices.push_back({0.5, 0.45, 0.4});  // collinear with the two above
+    mesh.triangles.push_back({8, 9, 10});
+    mesh.triangles.push_back({8, 8, 8});
+    const auto nominal = nominal_of(std::move(mesh));
+    ncv::GridOptions options;
+    options.cell_size = 0.1;
+    check_lists_complete(nominal, ncv::build_uniform_grid(nominal, options));
+  }
+}
+
+TEST_CASE("grid statistics describe the grid", "[grid]") {
+  const auto nominal = nominal_of(fx::torus(2, 0.5, 40, 20));
+  ncv::GridStatistics stats;
+  const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal, {}, &stats);
+  CHECK(stats.dims == grid.dims);
+  CHECK(stats.cells == grid.cell_count());
+  CHECK(stats.references == grid.cell_triangles.size());
+  CHECK(stats.references_per_triangle == Approx(static_cast<double>(stats.references) /
+                                                static_cast<double>(nominal.triangle_count())));
+  CHECK(stats.bytes == grid.cell_offsets.size() * 8 + grid.cell_triangles.size() * 4);
+  CHECK(stats.cell_size == grid.cell_size);
+  CHECK(stats.requested_cell_size == ncv::default_cell_size(nominal));
+  std::uint64_t empty = 0, largest = 0;
+  for (std::uint64_t c = 0; c < grid.cell_count(); ++c) {
+    const std::uint64_t size = grid.cell_offsets[c + 1] - grid.cell_offsets[c];
+    empty += size == 0;
+    largest = std::max(largest, size);
+  }
+  CHECK(stats.empty_cells == empty);
+  CHECK(stats.max_cell_triangles == largest);
+  CHECK(empty > 0);
+  // The grid box holds the part with room to spare.
+  const ncv::BoundingBox box = grid.bounds();
+  for (int axis = 0; axis < 3; ++axis) {
+    CHECK(box.min[axis] < nominal.local_bounds().min[axis]);
+    CHECK(box.max[axis] > nominal.local_bounds().max[axis]);
+  }
+}
+
+TEST_CASE("grid memory stays bounded for huge triangles among tiny ones", "[grid]") {
+  std::mt19937_64 rng(3);
+  SECTION("2 huge + 100k tiny triangles") {
+    ncv::Mesh mesh = fx::translated(fx::random_soup(rng, 100000, 0.01), {0, 0, 0});
+    for (Vec3& v : mesh.vertices) v = v * 1000.0;
+    const auto base = static_cast<std::uint32_t>(mesh.vertices.size());
+    mesh.vertices.insert(
+        mesh.vertices.end(),
+        {{0, 0, 0}, {1000, 0, 0}, {0, 1000, 0}, {1000, 1000, 1000}, {1000, 0, 500}});
+    mesh.triangles.push_back({base, base + 1, base + 2});
+    mesh.triangles.push_back({base, base + 3, base + 4});
+    const auto nominal = nominal_of(std::move(mesh));
+    ncv::GridStatistics stats;
+    const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal, {}, &stats);
+    const std::uint64_t t = nominal.triangle_count();
+    CHECK(stats.cells <= ncv::kCellsPerTriangle * t);
+    CHECK(stats.references <= ncv::kReferencesPerTriangle * t);
+    CHECK(stats.growth_steps > 0);
+    CHECK(stats.cell_size > stats.requested_cell_size);
+    grid.validate(nominal, "built");
+  }
+  SECTION("a stack of large parallel squares hits the reference bound") {
+    ncv::Mesh mesh;
+    for (std::uint32_t layer = 0; layer < 200; ++layer) {
+      const double z = layer * 0.005;
+      const std::uint32_t v = layer * 4;
+      mesh.vertices.insert(mesh.vertices.end(), {{0, 0, z}, {1, 0, z}, {1, 1, z}, {0, 1, z}});
+      mesh.triangles.push_back({v, v + 1, v + 2});
+      mesh.triangles.push_back({v, v + 2, v + 3});
+    }
+    const auto nominal = nominal_of(std::move(mesh));
+    ncv::GridOptions options;
+    options.cell_size = 1e-4;  // absurdly small: both bounds must step in
+    ncv::GridStatistics stats;
+    const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal, options, &stats);
+    CHECK(stats.cells <= ncv::kMinCellBudget);
+    CHECK(stats.references <= ncv::kMinReferenceBudget);
+    CHECK(stats.references > ncv::kMinReferenceBudget / 4);  // not grown far beyond need
+    check_lists_complete(nominal, grid);
+  }
+}
+
+TEST_CASE("grid build does not depend on the thread count", "[grid]") {
+  std::mt19937_64 rng(9);
+  const auto nominal = nominal_of(fx::random_soup(rng, 5000, 0.1));
+  const auto build_with = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    return ncv::build_uniform_grid(nominal);
+  };
+  const ncv::UniformGrid one = build_with(1);
+  const ncv::UniformGrid two = build_with(2);
+  CHECK(one.origin == two.origin);
+  CHECK(one.cell_size == two.cell_size);
+  CHECK(one.dims == two.dims);
+  CHECK(one.cell_offsets == two.cell_offsets);
+  CHECK(one.cell_triangles == two.cell_triangles);
+}
+
+TEST_CASE("a cell size far below the part's size grows without overflow", "[grid]") {
+  const ncv::NominalSurface nominal(fx::box({0, 0, 0}, {1e90, 1e90, 1e90}), "huge");
+  for (double tiny : {1e-300, 5e-324, 1.0}) {
+    ncv::GridOptions options;
+    options.cell_size = tiny;
+    ncv::GridStatistics stats;
+    const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal, options, &stats);
+    CHECK(stats.cells <= ncv::kMinCellBudget);
+    CHECK(std::isfinite(grid.cell_size));
+    grid.validate(nominal, "built");
+  }
+}
+
+TEST_CASE("grid options are checked", "[grid]") {
+  const auto nominal = nominal_of(fx::box({0, 0, 0}, {1, 1, 1}));
+  for (double bad : {-1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
+    ncv::GridOptions options;
+    options.cell_size = bad;
+    CHECK_THROWS_AS(ncv::build_uniform_grid(nominal, options), ncv::UsageError);
+  }
+}
+
+TEST_CASE("grid validation rejects every kind of corruption", "[grid]") {
+  std::mt19937_64 rng(2);
+  const auto nominal = nominal_of(fx::random_soup(rng, 200, 0.2));
+  const ncv::UniformGrid good = ncv::build_uniform_grid(nominal);
+  REQUIRE_NOTHROW(good.validate(nominal, "grid.bin"));
+  REQUIRE(good.cell_triangles.size() > 2);
+
+  const auto rejects = [&](auto&& corrupt, const char* what) {
+    ncv::UniformGrid grid = good;
+    corrupt(grid);
+    INFO(what);
+    CHECK_THROWS_AS(grid.validate(nominal, "grid.bin"), ncv::InputError);
+    try {
+      grid.validate(nominal, "grid.bin");
+    } catch (const ncv::InputError& e) {
+      CHECK(std::string(e.what()).rfind("grid.bin: ", 0) == 0);
+    }
+  };
+  rejects([](ncv::UniformGrid& g) { g.cell_size = 0; }, "zero cell size");
+  rejects([](ncv::UniformGrid& g) { g.cell_size = std::nan(""); }, "NaN cell size");
+  rejects([](ncv::UniformGrid& g) { g.cell_size = 1e308; }, "grid beyond double range");
+  rejects([](ncv::UniformGrid& g) { g.origin.y = std::numeric_limits<double>::infinity(); },
+          "infinite origin");
+  rejects([](ncv::UniformGrid& g) { g.dims[1] = 0; }, "zero dimension");
+  rejects(
+      [](ncv::UniformGrid& g) {
+        g.dims = {4000000000u, 4000000000u, 4000000000u};
+      },
+      "dimension product overflows");
+  rejects([](ncv::UniformGrid& g) { ++g.dims[0]; }, "dims do not match offsets");
+  rejects([](ncv::UniformGrid& g) { g.cell_offsets.pop_back(); }, "offsets too short");
+  rejects([](ncv::UniformGrid& g) { g.cell_offsets.clear(); }, "no offsets");
+  rejects([](ncv::UniformGrid& g) { g.cell_offsets[0] = 1; }, "offsets not from zero");
+  rejects([](ncv::UniformGrid& g) { g.cell_triangles.pop_back(); }, "offsets past the lists");
+  rejects(
+      [](ncv::UniformGrid& g) {
+        const auto c = std::find_if(g.cell_offsets.begin() + 1, g.cell_offsets.end(),
+                                    [](std::uint64_t o) { return o > 0; });
+        *(c - 1) = *c + 1;
+      },
+      "decreasing offsets");
+  rejects([&](ncv::UniformGrid& g) { g.cell_triangles[0] = 200; }, "triangle out of range");
+  rejects(
+      [](ncv::UniformGrid& g) {
+        for (std::size_t c = 0; c + 1 < g.cell_offsets.size(); ++c) {
+          if (g.cell_offsets[c + 1] - g.cell_offsets[c] >= 2) {
+            std::swap(g.cell_triangles[g.cell_offsets[c]], g.cell_triangles[g.cell_offsets[c] + 1]);
+            return;
+          }
+        }
+      },
+      "unsorted list");
+  rejects([](ncv::UniformGrid& g) { g.origin.x += 0.5; }, "does not cover the nominal");
+  rejects(
+      [](ncv::UniformGrid& g) {
+        // Drop triangle 0 from every list it is in.
+        ncv::UniformGrid pruned = g;
+        pruned.cell_triangles.clear();
+        for (std::size_t c = 0; c + 1 < g.cell_offsets.size(); ++c) {
+          pruned.cell_offsets[c] = pruned.cell_triangles.size();
+          for (std::uint64_t r = g.cell_offsets[c]; r < g.cell_offsets[c + 1]; ++r) {
+            if (g.cell_triangles[r] != 0) pruned.cell_triangles.push_back(g.cell_triangles[r]);
+          }
+        }
+        pruned.cell_offsets.back() = pruned.cell_triangles.size();
+        g = pruned;
+      },
+      "a triangle in no cell");
+  CHECK_THROWS_AS(good.validate(199, "grid.bin"), ncv::InputError);
+}
