@@ -32,7 +32,7 @@ using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle>::c
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
 Kernel::Point_3 point(const ncv::Vec3& v) {
-  return {v.x, v.y, v.z};
+  return {v[0], v[1], v[2]};
 }
 
 // Median over passes of one pass's seconds per sample; `pass` fills squared distances.
@@ -61,7 +61,8 @@ int main(int argc, char** argv) {
   ncv::bench::Workload w = ncv::bench::load_local_workload(argc, argv);
   const ncv::NominalSurface& nominal = *w.nominal;
   const std::vector<ncv::Vec3>& points = w.points;
-  const double scale = std::max(max_abs(w.grid.bounds().min), max_abs(w.grid.bounds().max));
+  const double scale =
+      std::max(ncv::max_abs(w.grid.bounds().min), ncv::max_abs(w.grid.bounds().max));
 
   std::vector<Triangle> triangles;
   triangles.reserve(nominal.triangle_count());

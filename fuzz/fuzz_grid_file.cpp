@@ -22,9 +22,9 @@ std::vector<ncv::Vec3> query_points(const ncv::Mesh& mesh) {
   const ncv::Vec3 centre = box.center();
   const ncv::Vec3 reach = box.max - centre + 0.5 * box.diagonal() * ncv::Vec3{1, 1, 1};
   for (int corner = 0; corner < 8; ++corner) {
-    points.push_back(centre + ncv::Vec3{(corner & 1 ? 1 : -1) * reach.x,
-                                        (corner & 2 ? 1 : -1) * reach.y,
-                                        (corner & 4 ? 1 : -1) * reach.z});
+    points.push_back(centre + ncv::Vec3{(corner & 1 ? 1 : -1) * reach[0],
+                                        (corner & 2 ? 1 : -1) * reach[1],
+                                        (corner & 4 ? 1 : -1) * reach[2]});
   }
   points.push_back(centre);
   return points;

@@ -109,7 +109,7 @@ class SignedDistanceJob {
         // feature's normal cone, where the dot product is strictly positive or negative;
         // a zero comes only from a point on the surface whose offset is rounding noise
         // (common: machined faces that coincide with nominal ones), so its sign is moot.
-        if (normal != Vec3{}) return false;
+        if (normal != Vec3(0, 0, 0)) return false;
         return winding_number_exact(nominal_.corners(), p) >= 0.5;
       }
     }

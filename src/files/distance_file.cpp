@@ -9,8 +9,8 @@ namespace ncv {
 namespace {
 
 nlohmann::json box_json(const BoundingBox& box) {
-  return {{"bbox_min", {box.min.x, box.min.y, box.min.z}},
-          {"bbox_max", {box.max.x, box.max.y, box.max.z}}};
+  return {{"bbox_min", {box.min[0], box.min[1], box.min[2]}},
+          {"bbox_max", {box.max[0], box.max[1], box.max[2]}}};
 }
 
 BoundingBox box_from(const Container& c, const std::string& prefix) {

@@ -14,7 +14,7 @@ struct BoundingBox {
   Vec3 max{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
            -std::numeric_limits<double>::infinity()};
 
-  bool empty() const { return min.x > max.x; }
+  bool empty() const { return min[0] > max[0]; }
   void extend(Vec3 p) {
     min = component_min(min, p);
     max = component_max(max, p);
@@ -36,7 +36,7 @@ struct BoundingBox {
 
 // Gap between two boxes (0 when they overlap).
 inline double box_gap(const BoundingBox& a, const BoundingBox& b) {
-  Vec3 gap;
+  Vec3 gap{0, 0, 0};
   for (int axis = 0; axis < 3; ++axis) {
     gap[axis] = std::max({0.0, a.min[axis] - b.max[axis], b.min[axis] - a.max[axis]});
   }

@@ -12,7 +12,7 @@ bool separated_on(Vec3 axis, Vec3 half, Vec3 v0, Vec3 v1, Vec3 v2) {
   const double p1 = dot(axis, v1);
   const double p2 = dot(axis, v2);
   const double radius =
-      half.x * std::fabs(axis.x) + half.y * std::fabs(axis.y) + half.z * std::fabs(axis.z);
+      half[0] * std::fabs(axis[0]) + half[1] * std::fabs(axis[1]) + half[2] * std::fabs(axis[2]);
   return std::min({p0, p1, p2}) > radius || std::max({p0, p1, p2}) < -radius;
 }
 
@@ -42,8 +42,8 @@ bool separated_on_box_axes(Vec3 half, Vec3 v0, Vec3 v1, Vec3 v2) {
 bool separated_by_plane(Vec3 half, Vec3 v0, Vec3 v1, Vec3 v2) {
   const Vec3 normal = cross(v1 - v0, v2 - v0);
   const double offset = dot(normal, v0);
-  const double radius =
-      half.x * std::fabs(normal.x) + half.y * std::fabs(normal.y) + half.z * std::fabs(normal.z);
+  const double radius = half[0] * std::fabs(normal[0]) + half[1] * std::fabs(normal[1]) +
+                        half[2] * std::fabs(normal[2]);
   return std::fabs(offset) > radius;
 }
 

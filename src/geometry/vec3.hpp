@@ -1,73 +1,51 @@
-// Plain 3-vector of doubles: the geometry type of the whole core.
+// The 3-vector of the whole core: OpenMesh's Vec3d, the point type of OpenMesh's meshes, so
+// a point array of a TriMesh and a span of ncverify points are the same memory (zero-copy).
+//
+// Components are read as v[0], v[1], v[2]. OpenMesh's default constructor leaves the
+// components unset, so a zero vector is written Vec3(0, 0, 0), never Vec3{}.
+//
+// The free functions below spell the arithmetic out component by component, in the order
+// the kernels were proven and measured with (closest_point.hpp): OpenMesh's own dot (`|`)
+// and cross (`%`) are templates over any dimension; these are what the hot loops inline.
 #pragma once
 
+#include <OpenMesh/Core/Geometry/VectorT.hh>
 #include <algorithm>
 #include <cmath>
 
 namespace ncv {
 
-struct Vec3 {
-  double x = 0, y = 0, z = 0;
+using Vec3 = OpenMesh::Vec3d;
 
-  constexpr double operator[](int axis) const { return axis == 0 ? x : (axis == 1 ? y : z); }
-  constexpr double& operator[](int axis) { return axis == 0 ? x : (axis == 1 ? y : z); }
-  constexpr bool operator==(const Vec3&) const = default;
-};
-
-constexpr Vec3 operator+(Vec3 a, Vec3 b) {
-  return {a.x + b.x, a.y + b.y, a.z + b.z};
+inline double dot(const Vec3& a, const Vec3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
-constexpr Vec3 operator-(Vec3 a, Vec3 b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
+inline Vec3 cross(const Vec3& a, const Vec3& b) {
+  return Vec3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
 }
-constexpr Vec3 operator-(Vec3 a) {
-  return {-a.x, -a.y, -a.z};
-}
-constexpr Vec3 operator*(double s, Vec3 a) {
-  return {s * a.x, s * a.y, s * a.z};
-}
-constexpr Vec3 operator*(Vec3 a, double s) {
-  return {s * a.x, s * a.y, s * a.z};
-}
-constexpr Vec3 operator/(Vec3 a, double s) {
-  return {a.x / s, a.y / s, a.z / s};
-}
-constexpr Vec3& operator+=(Vec3& a, Vec3 b) {
-  return a = a + b;
-}
-constexpr Vec3& operator-=(Vec3& a, Vec3 b) {
-  return a = a - b;
-}
-
-constexpr double dot(Vec3 a, Vec3 b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-constexpr Vec3 cross(Vec3 a, Vec3 b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-constexpr double squared_norm(Vec3 a) {
+inline double squared_norm(const Vec3& a) {
   return dot(a, a);
 }
-inline double norm(Vec3 a) {
+inline double norm(const Vec3& a) {
   return std::sqrt(squared_norm(a));
 }
-inline Vec3 normalized(Vec3 a) {
+inline Vec3 normalized(const Vec3& a) {
   const double length = norm(a);
-  return length > 0 ? a / length : Vec3{};
+  return length > 0 ? a / length : Vec3(0, 0, 0);
 }
-constexpr Vec3 component_min(Vec3 a, Vec3 b) {
-  return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
+inline Vec3 component_min(const Vec3& a, const Vec3& b) {
+  return Vec3(std::min(a[0], b[0]), std::min(a[1], b[1]), std::min(a[2], b[2]));
 }
-constexpr Vec3 component_max(Vec3 a, Vec3 b) {
-  return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
+inline Vec3 component_max(const Vec3& a, const Vec3& b) {
+  return Vec3(std::max(a[0], b[0]), std::max(a[1], b[1]), std::max(a[2], b[2]));
 }
 // The largest coordinate magnitude (the Chebyshev norm): how far from the origin a point's
 // coordinates reach, the scale the search's margins and coordinate limits refer to.
-inline double max_abs(Vec3 a) {
-  return std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z)});
+inline double max_abs(const Vec3& a) {
+  return std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])});
 }
-inline bool is_finite(Vec3 a) {
-  return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
+inline bool is_finite(const Vec3& a) {
+  return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]);
 }
 
 }  // namespace ncv

@@ -426,7 +426,7 @@ Mesh read_ply_body(const PlyHeader& header, Values& values, const std::string& s
         values.fail(fmt::format("element '{}' claims {} items, the data ends after {}",
                                 shown(element.name), element.count, item));
       }
-      Vec3 point;
+      Vec3 point{0, 0, 0};
       for (std::size_t p = 0; p < element.properties.size(); ++p) {
         const PlyProperty& property = element.properties[p];
         if (!property.is_list) {
@@ -523,7 +523,7 @@ class OffParser {
 
   void vertex() {
     Words words(next_content_line("the file ends before the last vertex (truncated?)"));
-    Vec3 p;
+    Vec3 p{0, 0, 0};
     for (int axis = 0; axis < 3; ++axis) {
       const std::string_view w = words.next();
       if (w.empty()) fail("a vertex has fewer than three coordinates");
@@ -595,7 +595,7 @@ class ObjParser {
 
  private:
   void vertex(Words& words) {
-    Vec3 p;
+    Vec3 p{0, 0, 0};
     for (int axis = 0; axis < 3; ++axis) {
       const std::string_view w = words.next();
       if (w.empty()) fail("a vertex has fewer than three coordinates");

@@ -134,8 +134,8 @@ void NominalSurface::choose_sign_method(const std::string& source) {
 void NominalSurface::compute_normals(const EdgeIncidence& incidence) {
   const std::size_t triangles = local_.triangle_count();
   face_normals_.resize(triangles);
-  vertex_normals_.assign(local_.vertex_count(), Vec3{});
-  edge_normals_.assign(incidence.edge_count(), Vec3{});
+  vertex_normals_.assign(local_.vertex_count(), Vec3(0, 0, 0));
+  edge_normals_.assign(incidence.edge_count(), Vec3(0, 0, 0));
   edge_of_slot_ = incidence.edge_of_slot;
   // Face normals and corner angles in parallel; the angle-weighted sums below stay serial,
   // in triangle order, so they do not depend on the thread count. The angles are kept
@@ -147,7 +147,7 @@ void NominalSurface::compute_normals(const EdgeIncidence& incidence) {
         for (std::size_t t = range.begin(); t < range.end(); ++t) {
           const auto& [a, b, c] = corners_[t];
           if (is_degenerate_triangle(a, b, c)) {
-            face_normals_[t] = Vec3{};
+            face_normals_[t] = Vec3(0, 0, 0);
             continue;
           }
           face_normals_[t] = normalized(cross(b - a, c - a));
@@ -155,7 +155,8 @@ void NominalSurface::compute_normals(const EdgeIncidence& incidence) {
         }
       });
   for (std::size_t t = 0; t < triangles; ++t) {
-    if (face_normals_[t] == Vec3{}) continue;  // degenerate (a real unit normal is never zero)
+    if (face_normals_[t] == Vec3(0, 0, 0))
+      continue;  // degenerate (a real unit normal is never zero)
     const Vec3 n = face_normals_[t];
     const Triangle& tri = local_.triangles[t];
     for (int k = 0; k < 3; ++k) vertex_normals_[tri[k]] += corner_angles[t][k] * n;
@@ -174,7 +175,7 @@ Vec3 NominalSurface::pseudonormal(std::size_t triangle, TriangleFeature feature)
   }
   if (is_edge(feature)) {
     const std::uint32_t edge = edge_of_slot_[3 * triangle + edge_index(feature)];
-    return edge == kNoEdge ? Vec3{} : edge_normals_[edge];
+    return edge == kNoEdge ? Vec3(0, 0, 0) : edge_normals_[edge];
   }
   return face_normals_[triangle];
 }

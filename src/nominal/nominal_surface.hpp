@@ -75,7 +75,7 @@ class NominalSurface {
   void copy_corners();
   void compute_normals(const EdgeIncidence& incidence);
 
-  Vec3 origin_;
+  Vec3 origin_{0, 0, 0};
   Mesh local_;
   Buffer<TriangleCorners> corners_;
   BoundingBox local_bounds_;

@@ -77,7 +77,7 @@ WindingNumberTree::Node WindingNumberTree::summarise(std::span<const std::uint32
                                                      std::span<const TriangleCorners> triangles) {
   Node node;
   double area = 0;
-  Vec3 weighted;
+  Vec3 weighted{0, 0, 0};
   BoundingBox box;
   for (std::uint32_t t : members) {
     const double a = norm(area_vector_of(triangles[t]));
@@ -124,7 +124,7 @@ std::uint32_t WindingNumberTree::build(std::vector<std::uint32_t>& order, std::u
   for (std::uint32_t t : members) centres.extend(centroid(triangles[t]));
   const Vec3 extent = centres.extent();
   const int axis =
-      extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+      extent[0] >= extent[1] && extent[0] >= extent[2] ? 0 : (extent[1] >= extent[2] ? 1 : 2);
   const std::uint32_t middle = begin + (end - begin) / 2;
   std::nth_element(order.begin() + begin, order.begin() + middle, order.begin() + end,
                    [&](std::uint32_t a, std::uint32_t b) {

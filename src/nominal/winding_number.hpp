@@ -43,9 +43,9 @@ class WindingNumberTree {
 
  private:
   struct Node {
-    Vec3 centre;
+    Vec3 centre{0, 0, 0};
     double radius = 0;
-    Vec3 area_vector;
+    Vec3 area_vector{0, 0, 0};
     std::array<double, 9> moment{};    // M, row-major
     std::array<double, 18> second{};   // C: per i, its symmetric (j, k) part 00 01 02 11 12 22
     std::uint32_t begin = 0, end = 0;  // range of triangles_ (leaves)

@@ -50,9 +50,9 @@ std::string header(const ErrorMesh& mesh, const ColorMap& map,
 }
 
 void put_vertex(char* at, Vec3 p, const Rgb& rgb, double value) {
-  at = put_float(at, p.x);
-  at = put_float(at, p.y);
-  at = put_float(at, p.z);
+  at = put_float(at, p[0]);
+  at = put_float(at, p[1]);
+  at = put_float(at, p[2]);
   for (const std::uint8_t channel : rgb) *at++ = static_cast<char>(channel);
   at = put_float(at, value);
   put_float(at, value);

@@ -62,7 +62,7 @@ ClosestHit brute_force_closest(std::span<const TriangleCorners> triangles, Vec3 
 }
 
 struct GridSearch::Query {
-  Vec3 q;
+  Vec3 q{0, 0, 0};
   std::array<double, 3> at;            // q by axis (Vec3's operator[] costs a branch per access)
   std::array<std::int64_t, 3> centre;  // cell of the query, clamped to the grid
   std::array<std::int64_t, 3> lo, hi;  // visited box, inclusive cell indices
@@ -101,7 +101,7 @@ ClosestHit GridSearch::closest(Vec3 q, SearchCounters& counters) {
   }
   Query query;
   query.q = q;
-  query.at = {q.x, q.y, q.z};
+  query.at = {q[0], q[1], q[2]};
   query.counters = &counters;
   query.scale = std::max(scale_, max_abs(q));
   query.margin = kMarginScale * query.scale;

@@ -60,7 +60,7 @@ namespace ncv {
 inline constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
 
 struct ClosestHit {
-  Vec3 point;  // in the frame of the triangles
+  Vec3 point{0, 0, 0};  // in the frame of the triangles
   double squared_distance = std::numeric_limits<double>::infinity();
   std::uint32_t triangle = kNoTriangle;
   TriangleFeature feature = TriangleFeature::face;

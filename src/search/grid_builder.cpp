@@ -15,7 +15,7 @@ namespace ncv {
 namespace {
 
 struct Layout {
-  Vec3 origin;
+  Vec3 origin{0, 0, 0};
   double h = 0;
   std::array<std::uint32_t, 3> dims{1, 1, 1};
   double slack = 0;
@@ -71,13 +71,13 @@ class Candidates {
     }
     normal_ = cross(t[1] - t[0], t[2] - t[0]);
     planar_ = !is_degenerate_triangle(t[0], t[1], t[2]);
-    const Vec3 magnitude{std::fabs(normal_.x), std::fabs(normal_.y), std::fabs(normal_.z)};
-    k_ = magnitude.x >= magnitude.y && magnitude.x >= magnitude.z
+    const Vec3 magnitude{std::fabs(normal_[0]), std::fabs(normal_[1]), std::fabs(normal_[2])};
+    k_ = magnitude[0] >= magnitude[1] && magnitude[0] >= magnitude[2]
              ? 0
-             : (magnitude.y >= magnitude.z ? 1 : 2);
+             : (magnitude[1] >= magnitude[2] ? 1 : 2);
     offset_ = dot(normal_, t[0]);
     const Vec3 extent = box.extent();
-    pad_ = 1e-4 * std::max({extent.x, extent.y, extent.z}) + 2 * layout.slack;
+    pad_ = 1e-4 * std::max({extent[0], extent[1], extent[2]}) + 2 * layout.slack;
   }
 
   // visit(i, j, k) for every candidate cell, column by column.
@@ -129,7 +129,7 @@ class Candidates {
 
   const Layout& layout_;
   std::array<std::int64_t, 3> lo_{}, hi_{};
-  Vec3 normal_;
+  Vec3 normal_{0, 0, 0};
   double offset_ = 0;
   double pad_ = 0;
   int k_ = 0;
@@ -141,9 +141,9 @@ template <class Visit>
 void for_each_touched_cell(const Layout& layout, const TriangleCorners& t, Visit&& visit) {
   const double half = 0.5 * layout.h + layout.slack;
   Candidates(layout, t).for_each([&](std::int64_t i, std::int64_t j, std::int64_t k) {
-    const Vec3 centre{layout.origin.x + (static_cast<double>(i) + 0.5) * layout.h,
-                      layout.origin.y + (static_cast<double>(j) + 0.5) * layout.h,
-                      layout.origin.z + (static_cast<double>(k) + 0.5) * layout.h};
+    const Vec3 centre{layout.origin[0] + (static_cast<double>(i) + 0.5) * layout.h,
+                      layout.origin[1] + (static_cast<double>(j) + 0.5) * layout.h,
+                      layout.origin[2] + (static_cast<double>(k) + 0.5) * layout.h};
     if (triangle_box_overlap(centre, {half, half, half}, t[0], t[1], t[2])) {
       visit(layout.cell(i, j, k));
     }
@@ -176,7 +176,7 @@ Layout choose_layout(const NominalSurface& nominal, double h, GridStatistics& st
   // No axis can ever use more than 2^31 cells (the cell budget is below that), so a cell
   // smaller than the part's extent / 2^31 grows at once: the cell counts below stay finite.
   const Vec3 extent = part.extent();
-  h = std::max(h, std::max({extent.x, extent.y, extent.z}) * 0x1p-31);
+  h = std::max(h, std::max({extent[0], extent[1], extent[2]}) * 0x1p-31);
   for (;; ++stats.growth_steps) {
     const std::array<double, 3> n = cells_per_axis(part, h);
     const double cells = n[0] * n[1] * n[2];

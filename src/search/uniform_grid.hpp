@@ -21,7 +21,7 @@
 namespace ncv {
 
 struct UniformGrid {
-  Vec3 origin;
+  Vec3 origin{0, 0, 0};
   double cell_size = 0;
   std::array<std::uint32_t, 3> dims{0, 0, 0};
   std::vector<std::uint64_t> cell_offsets;    // cell count + 1

@@ -10,7 +10,7 @@ namespace ncv {
 struct SampleExtreme {
   double value = 0;
   std::uint64_t sample = 0;  // the lowest-index sample attaining it
-  Vec3 position;
+  Vec3 position{0, 0, 0};
 };
 
 }  // namespace ncv

@@ -10,7 +10,7 @@ namespace ncv {
 namespace {
 
 nlohmann::json point_json(Vec3 p) {
-  return {p.x, p.y, p.z};
+  return {p[0], p[1], p[2]};
 }
 
 nlohmann::json extreme_json(const SampleExtreme& e) {
@@ -60,7 +60,7 @@ void append(fmt::memory_buffer& out, fmt::format_string<Args...> format, Args&&.
 }
 
 std::string format_point(Vec3 p) {
-  return fmt::format("({}, {}, {})", p.x, p.y, p.z);
+  return fmt::format("({}, {}, {})", p[0], p[1], p[2]);
 }
 
 void text_header(const PartReport& r, fmt::memory_buffer& out) {

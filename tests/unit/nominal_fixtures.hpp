@@ -34,7 +34,7 @@ class VoxelSolid {
   // Closed point-in-solid test: the oracle for signs.
   bool contains(Vec3 p, double scale) const {
     const auto cell = [&](double v) { return static_cast<int>(std::floor(v / scale)); };
-    return voxels_.count({cell(p.x), cell(p.y), cell(p.z)}) > 0;
+    return voxels_.count({cell(p[0]), cell(p[1]), cell(p[2])}) > 0;
   }
 
   Mesh mesh(double scale) const {
@@ -89,7 +89,7 @@ class VoxelSolid {
 inline Mesh box(Vec3 lo, Vec3 hi) {
   Mesh mesh;
   for (int i = 0; i < 8; ++i) {
-    mesh.vertices.push_back({i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z});
+    mesh.vertices.push_back({i & 1 ? hi[0] : lo[0], i & 2 ? hi[1] : lo[1], i & 4 ? hi[2] : lo[2]});
   }
   mesh.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
                     {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
@@ -156,8 +156,8 @@ inline Mesh flipped(Mesh mesh) {
 
 inline Vec3 random_point(std::mt19937_64& rng, Vec3 lo, Vec3 hi) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  return {lo.x + unit(rng) * (hi.x - lo.x), lo.y + unit(rng) * (hi.y - lo.y),
-          lo.z + unit(rng) * (hi.z - lo.z)};
+  return {lo[0] + unit(rng) * (hi[0] - lo[0]), lo[1] + unit(rng) * (hi[1] - lo[1]),
+          lo[2] + unit(rng) * (hi[2] - lo[2])};
 }
 
 inline Vec3 random_direction(std::mt19937_64& rng) {

@@ -129,7 +129,7 @@ void require_signs(const ncv::DistanceField& field, const std::vector<Vec3>& poi
     const double d = field.distance[i];
     REQUIRE(std::fabs(d) <= offset * (1 + 1e-9));
     if (std::fabs(d) < 1e-9) continue;
-    INFO("point " << points[i].x << " " << points[i].y << " " << points[i].z << " d " << d);
+    INFO("point " << points[i][0] << " " << points[i][1] << " " << points[i][2] << " d " << d);
     REQUIRE((d < 0) == solid.contains(points[i], scale));
     ++checked;
   }
@@ -160,7 +160,7 @@ TEST_CASE("grid search equals brute force to the last bit", "[distance]") {
   SECTION("a flat mesh, one cell thick") {
     std::mt19937_64 rng(101);
     ncv::Mesh sheet = fx::random_soup(rng, 300, 0.1);
-    for (Vec3& v : sheet.vertices) v.z = 0.25;
+    for (Vec3& v : sheet.vertices) v[2] = 0.25;
     require_grid_equals_brute_force(sheet, rng, 1500, SignMethod::winding);
   }
 }
@@ -184,7 +184,7 @@ TEST_CASE("ties between triangles go to the lowest index", "[distance]") {
 
 TEST_CASE("distances and signs around a box are the analytic ones", "[distance]") {
   struct Case {
-    Vec3 p;
+    Vec3 p{0, 0, 0};
     double distance;
   };
   const Case cases[] = {
@@ -259,7 +259,7 @@ TEST_CASE("an open nominal is signed by the winding number", "[distance]") {
   std::erase_if(mesh.triangles, [&](const ncv::Triangle& t) {
     for (std::uint32_t v : t) {
       const Vec3 p = mesh.vertices[v];
-      if (p.z != 0 || p.x > 1 || p.y > 1) return false;
+      if (p[2] != 0 || p[0] > 1 || p[1] > 1) return false;
     }
     return true;
   });
@@ -270,7 +270,7 @@ TEST_CASE("an open nominal is signed by the winding number", "[distance]") {
   std::mt19937_64 rng(31);
   std::vector<Vec3> points;
   for (Vec3 p : points_around(mesh, rng, 0.01)) {
-    if (p.z > 0.5) points.push_back(p);  // away from the hole
+    if (p[2] > 0.5) points.push_back(p);  // away from the hole
   }
   require_signs(distances(nominal, &grid, points, SignMethod::automatic), points, solid, 1.0, 0.01);
 }

@@ -39,9 +39,9 @@ double oracle_squared_distance(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
 TEST_CASE("closest point: each Voronoi region gives its feature", "[distance]") {
   const Vec3 a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0};
   struct Case {
-    Vec3 p;
+    Vec3 p{0, 0, 0};
     ncv::TriangleFeature feature;
-    Vec3 closest;
+    Vec3 closest{0, 0, 0};
   };
   const Case cases[] = {
       {{-1, -1, 0.5}, ncv::TriangleFeature::vertex0, a},
@@ -105,7 +105,7 @@ TEST_CASE("closest point: degenerate triangles behave as segments and points", "
                                   std::array{x1, o, x2}, std::array{x2, x1, o}}) {
       for (const Vec3 q : {Vec3{1.5, 1, 0}, Vec3{3, 0, 1}, Vec3{-1, 0, 0}, Vec3{0.25, 0, 0}}) {
         const ncv::TrianglePoint r = ncv::closest_point_on_triangle(q, a, b, c);
-        const Vec3 expected{std::clamp(q.x, 0.0, 2.0), 0, 0};
+        const Vec3 expected{std::clamp(q[0], 0.0, 2.0), 0, 0};
         CHECK(r.point == expected);
         CHECK(r.squared_distance == ncv::squared_norm(q - expected));
       }

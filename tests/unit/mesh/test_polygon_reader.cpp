@@ -73,7 +73,7 @@ TEST_CASE("coordinates keep double precision in every polygon format", "[polygon
        {bytes(ply), bytes(off), bytes(obj), binary_ply(false, far), binary_ply(true, far)}) {
     const Mesh mesh = parse_mesh(content, "far");
     REQUIRE(mesh.vertex_count() == 4);
-    CHECK(mesh.vertices[0].x == far);
+    CHECK(mesh.vertices[0][0] == far);
     CHECK(mesh.triangle_count() == 4);
   }
 }

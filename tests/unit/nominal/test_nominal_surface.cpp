@@ -52,10 +52,10 @@ TEST_CASE("nominal: unusable meshes are refused with the file name", "[nominal]"
   mesh.triangles[3][1] = 8;
   refuses(mesh, "refers to vertex 8");
   mesh = fx::box({0, 0, 0}, {1, 1, 1});
-  mesh.vertices[2].y = std::nan("");
+  mesh.vertices[2][1] = std::nan("");
   refuses(mesh, "not finite");
   mesh = fx::box({0, 0, 0}, {1, 1, 1});
-  mesh.vertices[5].z = -1e101;
+  mesh.vertices[5][2] = -1e101;
   refuses(mesh, "beyond");
 }
 
@@ -78,16 +78,16 @@ TEST_CASE("nominal: face normals and pseudonormals of a box", "[nominal]") {
       const Vec3 corner = mesh.corner(t, k);
       const Vec3 vertex_normal = nominal.pseudonormal(t, ncv::vertex_feature(k));
       const bool box_corner =
-          std::fabs(corner.x) == 1 && std::fabs(corner.y) == 1 && std::fabs(corner.z) == 1;
+          std::fabs(corner[0]) == 1 && std::fabs(corner[1]) == 1 && std::fabs(corner[2]) == 1;
       if (box_corner) {
-        CHECK(near(vertex_normal,
-                   Vec3{corner.x * diagonal.x, corner.y * diagonal.y, corner.z * diagonal.z}));
+        CHECK(near(vertex_normal, Vec3{corner[0] * diagonal[0], corner[1] * diagonal[1],
+                                       corner[2] * diagonal[2]}));
       }
       // An edge between two faces of one side has that side's normal; a box edge, the
       // bisector of its two sides.
       const Vec3 mid = 0.5 * (corner + mesh.corner(t, (k + 1) % 3));
       const Vec3 edge_normal = nominal.pseudonormal(t, ncv::edge_feature(k));
-      Vec3 expected;
+      Vec3 expected{0, 0, 0};
       for (int axis = 0; axis < 3; ++axis)
         expected[axis] = std::fabs(mid[axis]) == 1 ? mid[axis] : 0;
       CHECK(near(edge_normal, ncv::normalized(expected)));
@@ -106,7 +106,7 @@ TEST_CASE("nominal: degenerate faces contribute no normal", "[nominal]") {
   mesh.triangles.push_back({0, 1, m});
   const ncv::NominalSurface nominal(mesh, "cracked");
   CHECK(nominal.automatic_sign_method() == ncv::SignMethod::pseudonormal);
-  CHECK(nominal.face_normal(13) == Vec3{});
+  CHECK(nominal.face_normal(13) == Vec3(0, 0, 0));
   // At m the degenerate triangle has the largest angle (pi) but no say.
   CHECK(near(nominal.pseudonormal(12, ncv::vertex_feature(0)), {0, -1, 0}));
   // Edge 0-1 joins the bottom face and the degenerate one: the bottom's normal alone.

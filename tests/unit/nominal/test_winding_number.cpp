@@ -89,8 +89,8 @@ TEST_CASE("fast winding number classifies points around a closed solid", "[windi
     const Vec3 q = fx::random_point(rng, {-1, -1, -1}, {5, 5, 3});
     const double w = tree.evaluate(q);
     // Points on the surface itself have w = 1/2 or so; skip the few within 1e-6 of it.
-    const double frac_x = q.x - std::round(q.x), frac_y = q.y - std::round(q.y),
-                 frac_z = q.z - std::round(q.z);
+    const double frac_x = q[0] - std::round(q[0]), frac_y = q[1] - std::round(q[1]),
+                 frac_z = q[2] - std::round(q[2]);
     if (std::min({std::fabs(frac_x), std::fabs(frac_y), std::fabs(frac_z)}) < 1e-6) continue;
     CHECK((w >= 0.5) == solid.contains(q, 1.0));
     CHECK(std::fabs(w - std::round(w)) < 1e-2);

@@ -101,7 +101,7 @@ const ncv::ColorMap kMap =
 
 TEST_CASE("the PLY header declares the documented layout", "[ply]") {
   const SampleSet samples = square_samples();
-  const auto d = ncv::test::distances_of(samples, [](Vec3 p) { return p.x - 0.5; });
+  const auto d = ncv::test::distances_of(samples, [](Vec3 p) { return p[0] - 0.5; });
   const ErrorMesh mesh = ncv::workpiece_error_mesh(samples, d);
   const PlyFile file = split(to_ply(mesh, kMap));
   const std::vector<std::string> expected = {
@@ -128,7 +128,7 @@ TEST_CASE("the PLY header declares the documented layout", "[ply]") {
 
 TEST_CASE("the workpiece PLY carries positions, baked colours and signed errors", "[ply]") {
   const SampleSet samples = square_samples();
-  const auto d = ncv::test::distances_of(samples, [](Vec3 p) { return p.x - 0.5; });
+  const auto d = ncv::test::distances_of(samples, [](Vec3 p) { return p[0] - 0.5; });
   const ErrorMesh mesh = ncv::workpiece_error_mesh(samples, d);
   const std::string bytes = to_ply(mesh, kMap);
   const PlyFile file = split(bytes);
@@ -136,15 +136,15 @@ TEST_CASE("the workpiece PLY carries positions, baked colours and signed errors"
   for (std::size_t v = 0; v < mesh.mesh.vertex_count(); ++v) {
     const std::size_t at = v * kVertexBytes;
     const Vec3 p = mesh.mesh.vertices[v];
-    CHECK(float_at(file.body, at) == static_cast<float>(p.x));
-    CHECK(float_at(file.body, at + 4) == static_cast<float>(p.y));
-    CHECK(float_at(file.body, at + 8) == static_cast<float>(p.z));
-    const ncv::Rgb color = kMap.rgb(p.x - 0.5);
+    CHECK(float_at(file.body, at) == static_cast<float>(p[0]));
+    CHECK(float_at(file.body, at + 4) == static_cast<float>(p[1]));
+    CHECK(float_at(file.body, at + 8) == static_cast<float>(p[2]));
+    const ncv::Rgb color = kMap.rgb(p[0] - 0.5);
     CHECK(static_cast<std::uint8_t>(file.body[at + 12]) == color[0]);
     CHECK(static_cast<std::uint8_t>(file.body[at + 13]) == color[1]);
     CHECK(static_cast<std::uint8_t>(file.body[at + 14]) == color[2]);
-    CHECK(float_at(file.body, at + 15) == static_cast<float>(p.x - 0.5));
-    CHECK(float_at(file.body, at + 19) == static_cast<float>(p.x - 0.5));
+    CHECK(float_at(file.body, at + 15) == static_cast<float>(p[0] - 0.5));
+    CHECK(float_at(file.body, at + 19) == static_cast<float>(p[0] - 0.5));
   }
   const std::size_t faces = mesh.mesh.vertex_count() * kVertexBytes;
   for (std::size_t f = 0; f < mesh.mesh.triangle_count(); ++f) {
@@ -183,7 +183,7 @@ TEST_CASE("the lattice PLY shows every sample as a vertex", "[ply]") {
   std::uint64_t sub_triangles = 0;
   for (std::uint32_t n : samples.tri_n) sub_triangles += ncv::lattice_triangle_count(n);
   REQUIRE(samples.sample_count() > 9);
-  const auto d = ncv::test::distances_of(samples, [](Vec3 p) { return p.x - 0.5; });
+  const auto d = ncv::test::distances_of(samples, [](Vec3 p) { return p[0] - 0.5; });
   const ErrorMesh mesh = ncv::lattice_error_mesh(samples, d);
   REQUIRE(mesh.mesh.vertex_count() == samples.sample_count());
   REQUIRE(mesh.mesh.triangle_count() == sub_triangles);
@@ -195,7 +195,7 @@ TEST_CASE("the lattice PLY shows every sample as a vertex", "[ply]") {
   // Every face keeps the orientation of the square (normal +z).
   for (const ncv::Triangle& t : mesh.mesh.triangles) {
     const Vec3 a = mesh.mesh.vertices[t[0]];
-    CHECK(ncv::cross(mesh.mesh.vertices[t[1]] - a, mesh.mesh.vertices[t[2]] - a).z > 0);
+    CHECK(ncv::cross(mesh.mesh.vertices[t[1]] - a, mesh.mesh.vertices[t[2]] - a)[2] > 0);
   }
   const OpenMeshTriMesh read = read_back(bytes);
   CHECK(read.n_vertices() == samples.sample_count());
@@ -206,7 +206,7 @@ TEST_CASE("a PLY of many records is filled in parallel, every record in its plac
   // Over 16384 vertices and 32768 faces: several ranges of the parallel fill each.
   const SampleSet samples =
       ncv::sample_mesh(ncv::test::flat_grid(2, 1.0), 0.004, ncv::SamplingScheme::all);
-  const auto d = ncv::test::distances_of(samples, [](Vec3 p) { return p.x * p.y - 0.25; });
+  const auto d = ncv::test::distances_of(samples, [](Vec3 p) { return p[0] * p[1] - 0.25; });
   const ErrorMesh mesh = ncv::lattice_error_mesh(samples, d);
   REQUIRE(mesh.mesh.vertex_count() > 3 * 16384);
   REQUIRE(mesh.mesh.triangle_count() > 3 * 32768);
@@ -216,8 +216,8 @@ TEST_CASE("a PLY of many records is filled in parallel, every record in its plac
           mesh.mesh.vertex_count() * kVertexBytes + mesh.mesh.triangle_count() * 13);
   for (std::size_t v = 0; v < mesh.mesh.vertex_count(); ++v) {
     const std::size_t at = v * kVertexBytes;
-    REQUIRE(float_at(file.body, at) == static_cast<float>(mesh.mesh.vertices[v].x));
-    REQUIRE(float_at(file.body, at + 8) == static_cast<float>(mesh.mesh.vertices[v].z));
+    REQUIRE(float_at(file.body, at) == static_cast<float>(mesh.mesh.vertices[v][0]));
+    REQUIRE(float_at(file.body, at + 8) == static_cast<float>(mesh.mesh.vertices[v][2]));
     REQUIRE(static_cast<std::uint8_t>(file.body[at + 13]) == kMap.rgb(mesh.values[v])[1]);
     REQUIRE(float_at(file.body, at + 19) == static_cast<float>(mesh.values[v]));
   }

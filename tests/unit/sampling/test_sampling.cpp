@@ -110,7 +110,7 @@ TEST_CASE("mesh vertices are one sample each, computed once", "[sampling]") {
   CHECK(set.sample_count() == 4);
   CHECK(set.tri_n == std::vector<std::uint32_t>{2, 2});
   std::set<std::tuple<double, double, double>> distinct;
-  for (const Vec3& p : set.positions) distinct.insert({p.x, p.y, p.z});
+  for (const Vec3& p : set.positions) distinct.insert({p[0], p[1], p[2]});
   CHECK(distinct.size() == 4);
   // Both triangles' corners map to the shared vertex samples.
   CHECK(set.sample_at(0, 1, 0) == set.sample_at(1, 0, 1));  // vertex 1

@@ -291,7 +291,7 @@ TEST_CASE("grid validation rejects every kind of corruption", "[grid]") {
   rejects([](ncv::UniformGrid& g) { g.cell_size = 0; }, "zero cell size");
   rejects([](ncv::UniformGrid& g) { g.cell_size = std::nan(""); }, "NaN cell size");
   rejects([](ncv::UniformGrid& g) { g.cell_size = 1e308; }, "grid beyond double range");
-  rejects([](ncv::UniformGrid& g) { g.origin.y = std::numeric_limits<double>::infinity(); },
+  rejects([](ncv::UniformGrid& g) { g.origin[1] = std::numeric_limits<double>::infinity(); },
           "infinite origin");
   rejects([](ncv::UniformGrid& g) { g.dims[1] = 0; }, "zero dimension");
   rejects(
@@ -322,7 +322,7 @@ TEST_CASE("grid validation rejects every kind of corruption", "[grid]") {
         }
       },
       "unsorted list");
-  rejects([](ncv::UniformGrid& g) { g.origin.x += 0.5; }, "does not cover the nominal");
+  rejects([](ncv::UniformGrid& g) { g.origin[0] += 0.5; }, "does not cover the nominal");
   rejects(
       [](ncv::UniformGrid& g) {
         // Drop triangle 0 from every list it is in.

@@ -18,7 +18,7 @@ using ncv::test::distances_of;
 namespace {
 
 struct Disc {
-  Vec3 centre;
+  Vec3 centre{0, 0, 0};
   double radius, depth;
 };
 
@@ -62,11 +62,11 @@ TEST_CASE("two planted gouges give two gouge regions of the right size", "[regio
   CHECK(second.extreme.value == Approx(-small.depth).epsilon(0.01));
   CHECK(ncv::norm(first.extreme.position - large.centre) < 0.1);
   CHECK(ncv::norm(second.extreme.position - small.centre) < 0.1);
-  CHECK(first.box.min.x > large.centre.x - large.radius);
-  CHECK(first.box.max.x < large.centre.x + large.radius);
-  CHECK(first.box.max.x > large.centre.x + 0.9 * large.radius);
-  CHECK(second.box.min.y > small.centre.y - small.radius);
-  CHECK(second.box.min.y < small.centre.y - 0.9 * small.radius);
+  CHECK(first.box.min[0] > large.centre[0] - large.radius);
+  CHECK(first.box.max[0] < large.centre[0] + large.radius);
+  CHECK(first.box.max[0] > large.centre[0] + 0.9 * large.radius);
+  CHECK(second.box.min[1] > small.centre[1] - small.radius);
+  CHECK(second.box.min[1] < small.centre[1] - 0.9 * small.radius);
 
   std::uint64_t out_of_tolerance = 0;
   for (double v : d) out_of_tolerance += v < zone.lower;
@@ -85,8 +85,8 @@ TEST_CASE("a region across a triangle edge away from the vertices is one region"
   CHECK(regions[0].kind == RegionKind::gouge);
   CHECK(regions[0].area == Approx(std::numbers::pi * 0.01 * 0.95).epsilon(0.01));
   // It spans both triangles.
-  CHECK(regions[0].box.min.x < 0.45);
-  CHECK(regions[0].box.max.x > 0.55);
+  CHECK(regions[0].box.min[0] < 0.45);
+  CHECK(regions[0].box.max[0] > 0.55);
 }
 
 TEST_CASE("excess and gouge regions are kept apart even where they touch", "[regions]") {
@@ -95,7 +95,7 @@ TEST_CASE("excess and gouge regions are kept apart even where they touch", "[reg
   // A linear ramp through zero: excess where x > 2.5, gouge where x < 1.5, and a
   // separate excess bump (peak 0.8) inside the gouge half does not join the excess half.
   const Disc bump{{0.8, 2, 0}, 0.5, -2};
-  const auto d = distances_of(samples, [&](Vec3 p) { return p.x - 2 + dent(bump, p); });
+  const auto d = distances_of(samples, [&](Vec3 p) { return p[0] - 2 + dent(bump, p); });
   const std::vector<ErrorRegion> regions = ncv::find_error_regions(samples, d, {-0.5, 0.5});
   REQUIRE(regions.size() == 3);
   CHECK(regions[0].kind == RegionKind::excess);
@@ -103,8 +103,8 @@ TEST_CASE("excess and gouge regions are kept apart even where they touch", "[reg
   CHECK(regions[2].kind == RegionKind::excess);
   CHECK(regions[0].area == Approx(1.5 * 4).epsilon(1e-12));
   CHECK(regions[0].extreme.value == 2);
-  CHECK(regions[0].box.min.x > 2.5);
-  CHECK(regions[2].box.max.x < 1.3);
+  CHECK(regions[0].box.min[0] > 2.5);
+  CHECK(regions[2].box.max[0] < 1.3);
   CHECK(regions[0].area > regions[1].area);
   CHECK(regions[1].area > regions[2].area);
 }
@@ -112,6 +112,6 @@ TEST_CASE("excess and gouge regions are kept apart even where they touch", "[reg
 TEST_CASE("a surface within tolerance has no regions", "[regions]") {
   const SampleSet samples =
       ncv::sample_mesh(ncv::test::flat_grid(3, 1.0), 0.1, ncv::SamplingScheme::all);
-  const auto d = distances_of(samples, [](Vec3 p) { return 0.01 * p.x; });
+  const auto d = distances_of(samples, [](Vec3 p) { return 0.01 * p[0]; });
   CHECK(ncv::find_error_regions(samples, d, {-0.01, 0.01}).empty());
 }

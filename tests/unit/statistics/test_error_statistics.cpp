@@ -48,12 +48,12 @@ double scallop_mean(double r, double s) {
 
 // A polygon vertex with the interpolated value there.
 struct ValuedPoint {
-  Vec3 p;
+  Vec3 p{0, 0, 0};
   double value;
 };
 
 double polygon_area(const std::vector<ValuedPoint>& polygon) {
-  Vec3 twice{};
+  Vec3 twice{0, 0, 0};
   for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
     twice += ncv::cross(polygon[k].p - polygon[0].p, polygon[k + 1].p - polygon[0].p);
   }
@@ -122,8 +122,8 @@ Reference reference_measures(const SampleSet& samples, const std::vector<double>
 ncv::Mesh uneven_surface() {
   ncv::Mesh mesh = ncv::test::flat_grid(12, 1.0);
   for (Vec3& v : mesh.vertices) {
-    v.x = v.x * v.x * 4;
-    v.z = 0.3 * std::sin(2 * v.x) * std::cos(3 * v.y);
+    v[0] = v[0] * v[0] * 4;
+    v[2] = 0.3 * std::sin(2 * v[0]) * std::cos(3 * v[1]);
   }
   return mesh;
 }
@@ -151,7 +151,7 @@ TEST_CASE("a linear field has exact mean, RMS, spread and percentiles", "[stats]
       ncv::sample_mesh(ncv::test::flat_grid(3, 1.0), 0.07, ncv::SamplingScheme::all);
   // On the unit square, d = x + y has mean 1, variance 1/6, and area fraction
   // t^2/2 below t <= 1.
-  const auto d = distances_of(samples, [](Vec3 p) { return p.x + p.y; });
+  const auto d = distances_of(samples, [](Vec3 p) { return p[0] + p[1]; });
   const ErrorStatistics stats = compute_error_statistics(samples, d, std::nullopt);
   CHECK(stats.sampled_area == Approx(1).epsilon(1e-14));
   CHECK(stats.workpiece_area == Approx(1).epsilon(1e-14));
@@ -172,7 +172,7 @@ TEST_CASE("a linear field has exact mean, RMS, spread and percentiles", "[stats]
 TEST_CASE("tolerance areas of a linear field are clipped exactly", "[stats]") {
   const SampleSet samples =
       ncv::sample_mesh(ncv::test::flat_grid(4, 1.0), 0.09, ncv::SamplingScheme::all);
-  const auto d = distances_of(samples, [](Vec3 p) { return p.x + p.y - 1; });
+  const auto d = distances_of(samples, [](Vec3 p) { return p[0] + p[1] - 1; });
   // d > 0.4 on the corner triangle with legs 0.6; d < -0.7 on the one with legs 0.3.
   const ErrorStatistics stats = compute_error_statistics(samples, d, Tolerance{-0.7, 0.4});
   REQUIRE(stats.tolerance);
@@ -186,7 +186,7 @@ TEST_CASE("tolerance areas of a linear field are clipped exactly", "[stats]") {
 TEST_CASE("the histogram holds the exact area per bin", "[stats]") {
   const SampleSet samples =
       ncv::sample_mesh(ncv::test::flat_grid(2, 1.0), 0.1, ncv::SamplingScheme::all);
-  const auto d = distances_of(samples, [](Vec3 p) { return p.x + p.y; });
+  const auto d = distances_of(samples, [](Vec3 p) { return p[0] + p[1]; });
   const ErrorStatistics stats =
       compute_error_statistics(samples, d, std::nullopt, {.bins = 4, .range = {}});
   const ncv::Histogram& h = stats.histogram;
@@ -226,7 +226,7 @@ TEST_CASE("scallop statistics converge to the analytic profile", "[stats]") {
   const auto error_at = [&](double step) {
     const SampleSet samples =
         ncv::sample_mesh(ncv::test::flat_grid(5, 10.0), step, ncv::SamplingScheme::all);
-    const auto d = distances_of(samples, [&](Vec3 p) { return scallop(p.x, r, stepover); });
+    const auto d = distances_of(samples, [&](Vec3 p) { return scallop(p[0], r, stepover); });
     const ErrorStatistics stats = compute_error_statistics(samples, d, std::nullopt);
     const double exact_median = scallop(0.25 * stepover + stepover / 2, r, stepover);
     const double exact_p95 = scallop(0.95 * stepover / 2 + stepover / 2, r, stepover);
@@ -286,7 +286,7 @@ TEST_CASE("the measures match a plain sub-triangle by sub-triangle recomputation
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> noise(-0.1, 0.1);
   std::vector<double> d =
-      distances_of(samples, [](Vec3 p) { return 0.2 * std::sin(3 * p.x + p.y); });
+      distances_of(samples, [](Vec3 p) { return 0.2 * std::sin(3 * p[0] + p[1]); });
   for (double& v : d) v += noise(random);
   const Tolerance zone{-0.15, 0.1};
 
@@ -377,7 +377,7 @@ TEST_CASE("quantiles of atoms and ramps", "[stats]") {
 TEST_CASE("the verdict passes exactly up to the tolerance limits", "[stats]") {
   const SampleSet samples =
       ncv::sample_mesh(ncv::test::flat_grid(2, 1.0), 0.2, ncv::SamplingScheme::all);
-  const auto d = distances_of(samples, [](Vec3 p) { return 0.25 * p.x - 0.125; });
+  const auto d = distances_of(samples, [](Vec3 p) { return 0.25 * p[0] - 0.125; });
   const auto verdict = [&](Tolerance zone) {
     return compute_error_statistics(samples, d, zone).tolerance->pass;
   };
@@ -404,7 +404,7 @@ TEST_CASE("triangle counts follow the sampling scheme", "[stats]") {
   REQUIRE(small < mesh.triangle_count());
   for (const auto scheme : {ncv::SamplingScheme::all, ncv::SamplingScheme::paper_ii}) {
     const SampleSet samples = ncv::sample_mesh(mesh, step, scheme);
-    const auto d = distances_of(samples, [](Vec3 p) { return p.z; });
+    const auto d = distances_of(samples, [](Vec3 p) { return p[2]; });
     const ErrorStatistics stats = compute_error_statistics(samples, d, std::nullopt);
     CHECK(stats.samples == samples.sample_count());
     CHECK(stats.triangles == mesh.triangle_count());
@@ -425,7 +425,7 @@ TEST_CASE("statistics do not depend on the thread count", "[stats]") {
   REQUIRE(samples.sample_count() > 100000);
   std::mt19937_64 random(3);
   std::uniform_real_distribution<double> noise(-1e-3, 1e-3);
-  std::vector<double> d = distances_of(samples, [](Vec3 p) { return std::sin(9 * p.x) * p.y; });
+  std::vector<double> d = distances_of(samples, [](Vec3 p) { return std::sin(9 * p[0]) * p[1]; });
   for (double& v : d) v += noise(random);
   const auto run = [&](int threads) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
@@ -451,7 +451,7 @@ TEST_CASE("percentiles of a field of many patch blocks invert the exact distribu
       ncv::sample_mesh(ncv::test::flat_grid(40, 1.0), 0.0025, ncv::SamplingScheme::all);
   std::mt19937_64 random(5);
   std::uniform_real_distribution<double> noise(-1e-3, 1e-3);
-  std::vector<double> d = distances_of(samples, [](Vec3 p) { return std::sin(9 * p.x) * p.y; });
+  std::vector<double> d = distances_of(samples, [](Vec3 p) { return std::sin(9 * p[0]) * p[1]; });
   for (double& v : d) v += noise(random);
   const ncv::Buffer<ncv::LinearPatch> patches = ncv::lattice_patches(samples, d);
   REQUIRE(patches.size() > 3 * 65536);

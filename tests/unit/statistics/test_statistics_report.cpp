@@ -17,8 +17,8 @@ DistanceSet linear_field_part() {
   set.samples.workpiece_source = "parts/plate.stl";
   set.samples.step_spec = "0.5";
   for (const Vec3& p : set.samples.positions) {
-    set.field.distance.push_back(p.x / 10 - 0.2);
-    set.field.closest_point.push_back({p.x, p.y, 0});
+    set.field.distance.push_back(p[0] / 10 - 0.2);
+    set.field.closest_point.push_back({p[0], p[1], 0});
     set.field.closest_face.push_back(0);
   }
   set.nominal = {"plate_nominal.stl", 42, 2, {}};

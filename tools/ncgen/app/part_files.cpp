@@ -20,7 +20,7 @@ nlohmann::json save_mesh(const ncv::Mesh& mesh, const std::filesystem::path& pat
   return {{"file", path.filename().string()},
           {"triangles", mesh.triangle_count()},
           {"vertices", mesh.vertex_count()},
-          {"bounds", {{box.min.x, box.min.y, box.min.z}, {box.max.x, box.max.y, box.max.z}}}};
+          {"bounds", {{box.min[0], box.min[1], box.min[2]}, {box.max[0], box.max[1], box.max[2]}}}};
 }
 
 namespace {

@@ -68,7 +68,7 @@ std::vector<double> scallop_stations(double length, double stepover, int segment
 }  // namespace
 
 ncv::Mesh box_mesh(Vec3 min, Vec3 max) {
-  return prism(min.x, max.x, {{min.y, max.z}, {max.y, max.z}}, min.z);
+  return prism(min[0], max[0], {{min[1], max[2]}, {max[1], max[2]}}, min[2]);
 }
 
 double scallop_height(double radius, double stepover) {
@@ -80,11 +80,11 @@ ncv::Mesh scalloped_box(Vec3 size, double radius, double stepover, int segments)
     throw std::invalid_argument("scallops need 0 < stepover <= 2 radius and segments >= 1");
   }
   std::vector<ProfilePoint> profile;
-  for (double y : scallop_stations(size.y, stepover, segments)) {
+  for (double y : scallop_stations(size[1], stepover, segments)) {
     const double off_pass = std::abs(y - stepover * std::round(y / stepover));
-    profile.push_back({y, size.z + radius - std::sqrt(radius * radius - off_pass * off_pass)});
+    profile.push_back({y, size[2] + radius - std::sqrt(radius * radius - off_pass * off_pass)});
   }
-  return prism(0, size.x, profile, 0);
+  return prism(0, size[0], profile, 0);
 }
 
 }  // namespace ncv::gen

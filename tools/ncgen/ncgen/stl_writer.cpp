@@ -16,8 +16,8 @@ constexpr std::size_t header_bytes = 80;
 constexpr std::size_t record_bytes = 50;
 
 void put_vec3(Vec3 v, char* out) {
-  const std::array<float, 3> f{static_cast<float>(v.x), static_cast<float>(v.y),
-                               static_cast<float>(v.z)};
+  const std::array<float, 3> f{static_cast<float>(v[0]), static_cast<float>(v[1]),
+                               static_cast<float>(v[2])};
   std::memcpy(out, f.data(), sizeof f);
 }
 

@@ -64,15 +64,15 @@ double largest_gouge_radius(const StageSnapshot& snapshot) {
 // Height of the mesh's upward faces above (x, y), by barycentric interpolation.
 double mesh_height(const ncv::Mesh& mesh, double x, double y) {
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-    if (ncv::area_vector(mesh, t).z <= 0) continue;
+    if (ncv::area_vector(mesh, t)[2] <= 0) continue;
     const ncv::Vec3 a = mesh.corner(t, 0);
     const ncv::Vec3 b = mesh.corner(t, 1);
     const ncv::Vec3 c = mesh.corner(t, 2);
-    const double area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
-    const double wb = ((x - a.x) * (c.y - a.y) - (c.x - a.x) * (y - a.y)) / area;
-    const double wc = ((b.x - a.x) * (y - a.y) - (x - a.x) * (b.y - a.y)) / area;
+    const double area = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+    const double wb = ((x - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (y - a[1])) / area;
+    const double wc = ((b[0] - a[0]) * (y - a[1]) - (x - a[0]) * (b[1] - a[1])) / area;
     if (wb >= -1e-12 && wc >= -1e-12 && wb + wc <= 1 + 1e-12) {
-      return a.z + wb * (b.z - a.z) + wc * (c.z - a.z);
+      return a[2] + wb * (b[2] - a[2]) + wc * (c[2] - a[2]);
     }
   }
   return NAN;
@@ -106,12 +106,12 @@ TEST_CASE("workpieces of every stage are closed outward manifolds on the nominal
       CHECK(report.euler == 2);
       CHECK(report.volume > 0);
       const ncv::BoundingBox box = ncv::bounding_box(workpiece->mesh);
-      CHECK(box.min.x == 0);
-      CHECK(box.min.y == 0);
-      CHECK(box.min.z == 0);
-      CHECK(box.max.x == Approx(120));
-      CHECK(box.max.y == Approx(80));
-      CHECK(box.max.z <= stock_height);
+      CHECK(box.min[0] == 0);
+      CHECK(box.min[1] == 0);
+      CHECK(box.min[2] == 0);
+      CHECK(box.max[0] == Approx(120));
+      CHECK(box.max[1] == Approx(80));
+      CHECK(box.max[2] <= stock_height);
     }
   }
 }

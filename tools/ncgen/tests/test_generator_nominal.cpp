@@ -26,7 +26,7 @@ double plane_deviation(const ncv::Mesh& mesh, std::size_t t, const MouldCore& pa
   for (int i = 0; i <= 6; ++i) {
     for (int j = 0; i + j <= 6; ++j) {
       const ncv::Vec3 q = a + (i / 6.0) * u + (j / 6.0) * v;
-      const ncv::Vec3 surface{q.x, q.y, part.height(q.x, q.y)};
+      const ncv::Vec3 surface{q[0], q[1], part.height(q[0], q[1])};
       worst = std::max(worst, std::abs(ncv::dot(normal, surface - a)));
     }
   }
@@ -34,7 +34,7 @@ double plane_deviation(const ncv::Mesh& mesh, std::size_t t, const MouldCore& pa
 }
 
 bool faces_up(const ncv::Mesh& mesh, std::size_t t) {
-  return ncv::area_vector(mesh, t).z > 0;
+  return ncv::area_vector(mesh, t)[2] > 0;
 }
 
 }  // namespace
@@ -54,13 +54,13 @@ TEST_CASE("nominal core is a closed outward manifold of about 17 k triangles", "
 
 TEST_CASE("nominal core fills the 120 x 80 mm block on z = 0 up to its crown", "[generator]") {
   const ncv::BoundingBox box = ncv::bounding_box(default_nominal());
-  CHECK(box.min.x == 0);
-  CHECK(box.min.y == 0);
-  CHECK(box.min.z == 0);
-  CHECK(box.max.x == Approx(120));
-  CHECK(box.max.y == Approx(80));
-  CHECK(box.max.z > 26);  // the boss top; the crown rises above it
-  CHECK(box.max.z < 30.5);
+  CHECK(box.min[0] == 0);
+  CHECK(box.min[1] == 0);
+  CHECK(box.min[2] == 0);
+  CHECK(box.max[0] == Approx(120));
+  CHECK(box.max[1] == Approx(80));
+  CHECK(box.max[2] > 26);  // the boss top; the crown rises above it
+  CHECK(box.max[2] < 30.5);
 }
 
 TEST_CASE("nominal volume is the integral of the height field", "[generator]") {
@@ -83,7 +83,7 @@ TEST_CASE("nominal top vertices lie on the surface within the chord tolerance", 
   const MouldCore part = make_mould_core(1);
   const ncv::Mesh& mesh = default_nominal();
   for (const ncv::Vec3& v : mesh.vertices) {
-    if (v.z > 0) REQUIRE(v.z == Approx(part.height(v.x, v.y)).margin(1e-5));
+    if (v[2] > 0) REQUIRE(v[2] == Approx(part.height(v[0], v[1])).margin(1e-5));
   }
   double worst = 0;
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
@@ -101,8 +101,8 @@ TEST_CASE("nominal pocket creases are exact triangle edges", "[generator]") {
   std::size_t pocket_triangles = 0;
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     const ncv::Vec3 c = (mesh.corner(t, 0) + mesh.corner(t, 1) + mesh.corner(t, 2)) / 3;
-    if (!faces_up(mesh, t) || c.x < pocket.min_x || c.x > pocket.max_x || c.y < pocket.min_y ||
-        c.y > pocket.max_y) {
+    if (!faces_up(mesh, t) || c[0] < pocket.min_x || c[0] > pocket.max_x || c[1] < pocket.min_y ||
+        c[1] > pocket.max_y) {
       continue;
     }
     ++pocket_triangles;
@@ -120,8 +120,8 @@ TEST_CASE("nominal tessellates planes coarsely and curved faces finely", "[gener
   double curved = 0;
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     if (!faces_up(mesh, t)) continue;
-    const bool on_base = mesh.corner(t, 0).z == part.base && mesh.corner(t, 1).z == part.base &&
-                         mesh.corner(t, 2).z == part.base;
+    const bool on_base = mesh.corner(t, 0)[2] == part.base && mesh.corner(t, 1)[2] == part.base &&
+                         mesh.corner(t, 2)[2] == part.base;
     (on_base ? planar_area : curved_area) += ncv::triangle_area(mesh, t);
     ++(on_base ? planar : curved);
   }

@@ -133,10 +133,10 @@ TEST_CASE("scalloped box rises exactly to the scallop height", "[generator]") {
   const double height = scallop_height(radius, stepover);
   CHECK(height == Approx(radius - std::sqrt(radius * radius - stepover * stepover / 4)));
   const ncv::BoundingBox box = ncv::bounding_box(mesh);
-  CHECK(box.max.z == Approx(30 + height).epsilon(1e-12));
+  CHECK(box.max[2] == Approx(30 + height).epsilon(1e-12));
   double lowest_top = INFINITY;
   for (const ncv::Vec3& v : mesh.vertices) {
-    if (v.z > 0) lowest_top = std::min(lowest_top, v.z);
+    if (v[2] > 0) lowest_top = std::min(lowest_top, v[2]);
   }
   CHECK(lowest_top == 30);
   // Area between one arc and its chord at the nominal top, times 96 stepovers and the length.
