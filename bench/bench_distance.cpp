@@ -18,7 +18,7 @@
 #include "mesh/mesh_reader.hpp"
 #include "nominal/winding_number.hpp"
 #include "search/grid_builder.hpp"
-#include "search/search_grid.hpp"
+#include "search/search_index.hpp"
 #include "workload.hpp"
 
 namespace {
@@ -49,8 +49,8 @@ ncv::Mesh torus() {
 
 struct Scene {
   ncv::NominalSurface nominal{torus(), "torus"};
-  ncv::UniformGrid grid = ncv::build_uniform_grid(nominal);
-  ncv::SearchGrid search{nominal.corners(), grid};
+  ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
+  ncv::SearchIndex search{nominal.corners(), grid};
   std::vector<Vec3> points;
   std::vector<Vec3> shuffled;
 
@@ -149,7 +149,7 @@ void BM_WorkloadGrid(benchmark::State& state) {
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
                               static_cast<std::size_t>(state.range(0)));
   // Built once, as `run` builds it in its grid-build phase.
-  static const ncv::SearchGrid search(w->nominal->corners(), w->grid);
+  static const ncv::SearchIndex search(w->nominal->corners(), w->grid);
   ncv::SearchStatistics stats;
   for (auto _ : state) {
     benchmark::DoNotOptimize(ncv::compute_signed_distances(*w->nominal, &search, w->points, {},

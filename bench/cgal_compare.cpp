@@ -20,7 +20,7 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include "search/closest_point_search.hpp"
-#include "search/search_grid.hpp"
+#include "search/search_index.hpp"
 #include "util/stopwatch.hpp"
 #include "workload.hpp"
 
@@ -75,8 +75,8 @@ int main(int argc, char** argv) {
   tree.accelerate_distance_queries();
   const double build_seconds = build_clock.seconds();
 
-  const ncv::SearchGrid search_grid(nominal.corners(), w.grid);
-  ncv::GridSearch search(search_grid);
+  const ncv::SearchIndex index(nominal.corners(), w.grid);
+  ncv::GridSearcher search(index);
   std::vector<double> grid_squared(points.size()), default_squared(points.size()),
       hinted_squared(points.size());
   const double grid_time = time_per_sample(

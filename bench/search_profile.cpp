@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "search/closest_point_search.hpp"
-#include "search/search_grid.hpp"
+#include "search/search_index.hpp"
 #include "util/stopwatch.hpp"
 #include "workload.hpp"
 
@@ -83,7 +83,7 @@ void print(const char* title, const std::vector<SampleClass>& classes, std::size
 
 // One pass over the points; `answers` receives each point's closest triangle or, when
 // given one, supplies it as the hint.
-Profile profile(ncv::GridSearch& search, const std::vector<ncv::Vec3>& points,
+Profile profile(ncv::GridSearcher& search, const std::vector<ncv::Vec3>& points,
                 std::vector<std::uint32_t>& answers, bool answers_as_hints) {
   Profile result{distance_classes(), hint_classes()};
   ncv::SearchCounters counters;
@@ -115,7 +115,7 @@ Profile profile(ncv::GridSearch& search, const std::vector<ncv::Vec3>& points,
 }
 
 // One pass timed as a whole, in seconds per sample.
-double whole_pass(ncv::GridSearch& search, const std::vector<ncv::Vec3>& points,
+double whole_pass(ncv::GridSearcher& search, const std::vector<ncv::Vec3>& points,
                   const std::vector<std::uint32_t>& answers, bool answers_as_hints) {
   const ncv::Stopwatch clock;
   if (answers_as_hints) {
@@ -137,8 +137,8 @@ int main(int argc, char** argv) {
   const ncv::NominalSurface& nominal = *w.nominal;
   const std::vector<ncv::Vec3>& points = w.points;
 
-  const ncv::SearchGrid search_grid(nominal.corners(), w.grid);
-  ncv::GridSearch search(search_grid);
+  const ncv::SearchIndex index(nominal.corners(), w.grid);
+  ncv::GridSearcher search(index);
   std::vector<std::uint32_t> answers(points.size());
   const Profile searched = profile(search, points, answers, false);
   const Profile hinted = profile(search, points, answers, true);

@@ -21,7 +21,7 @@ namespace ncv::bench {
 
 struct Workload {
   std::unique_ptr<NominalSurface> nominal;
-  UniformGrid grid;
+  BackgroundGrid grid;
   std::vector<Vec3> points;  // the samples, global frame (load_workload) or local
 };
 
@@ -57,7 +57,7 @@ inline Workload load_local_workload(int argc, char** argv) {
 // Searches every point in turn as the distance step does, the hint dropped at the start of
 // each block; on_hit(i, hit) receives each result.
 template <class OnHit>
-void search_in_step_order(GridSearch& search, const std::vector<Vec3>& points, OnHit&& on_hit) {
+void search_in_step_order(GridSearcher& search, const std::vector<Vec3>& points, OnHit&& on_hit) {
   SearchCounters counters;
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (i % kDistanceBlockSize == 0) search.forget_hint();

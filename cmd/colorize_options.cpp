@@ -44,8 +44,7 @@ ColorMap choose_map(const DistanceSet& distances, const ColorizeOptions& options
   if (options.range.empty()) {
     range = default_range(distances, kind, tolerance);
   } else {
-    const Tolerance given = parse_tolerance(options.range);
-    range = {given.lower, given.upper};
+    range = parse_value_range(options.range);
   }
   return make_color_map(kind, range, tolerance);
 }

@@ -6,7 +6,7 @@
 #include "files/distance_file.hpp"
 #include "files/grid_file.hpp"
 #include "files/samples_file.hpp"
-#include "search/search_grid.hpp"
+#include "search/search_index.hpp"
 #include "steps/distance_step.hpp"
 #include "util/input_bytes.hpp"
 
@@ -24,10 +24,10 @@ struct DistanceOptions {
 void run_distance(const DistanceOptions& options) {
   OutputFile out(default_output(options.output, options.samples, ".dist"), OutputKind::binary);
   SampleSet samples = read_samples_file(options.samples);
-  const NominalGrid grid = read_grid_file(options.grid);
+  const PreparedNominal grid = read_grid_file(options.grid);
   double seconds = 0;
   const DistanceSet result = [&] {  // the search's boxes freed before the file is written
-    const SearchGrid search(grid.nominal->corners(), grid.grid);
+    const SearchIndex search(grid.nominal->corners(), grid.grid);
     return measure_distances(std::move(samples), grid, search, options.step, &seconds);
   }();
   write_distance_file(result, out);

@@ -19,7 +19,7 @@ struct GridBuildOptions {
   double cell_size = 0;
 };
 
-void report_grid(const NominalGrid& g, const GridStatistics& s, double seconds) {
+void report_grid(const PreparedNominal& g, const GridStatistics& s, double seconds) {
   const TopologyReport& t = g.nominal->topology();
   spdlog::info(
       "{}: {} triangles, {} vertices; closed: {}, manifold: {}, consistently oriented: "
@@ -43,8 +43,9 @@ void run_grid_build(const GridBuildOptions& options) {
   Stopwatch clock;
   OutputFile out(default_output(options.output, options.nominal, ".grid"), OutputKind::binary);
   GridStatistics statistics;
-  const NominalGrid g = build_nominal_grid(read_mesh(options.nominal), input_name(options.nominal),
-                                           GridOptions{options.cell_size}, &statistics);
+  const PreparedNominal g =
+      build_nominal_grid(read_mesh(options.nominal), input_name(options.nominal),
+                         GridOptions{options.cell_size}, &statistics);
   write_grid_file(g, statistics, out);
   out.commit();
   report_grid(g, statistics, clock.seconds());

@@ -14,7 +14,7 @@
 #include "mesh/mesh_reader.hpp"
 #include "option_checks.hpp"
 #include "report_options.hpp"
-#include "search/search_grid.hpp"
+#include "search/search_index.hpp"
 #include "util/input_bytes.hpp"
 #include "util/memory_guard.hpp"
 #include "util/stopwatch.hpp"
@@ -128,9 +128,9 @@ void run_all(const RunOptions& options, CommandContext& context) {
   });
 
   GridStatistics grid_statistics;
-  const NominalGrid grid = build_nominal_grid(std::move(nominal), input_name(options.nominal),
-                                              GridOptions{options.cell_size}, &grid_statistics);
-  std::optional<SearchGrid> search(std::in_place, grid.nominal->corners(), grid.grid);
+  const PreparedNominal grid = build_nominal_grid(std::move(nominal), input_name(options.nominal),
+                                                  GridOptions{options.cell_size}, &grid_statistics);
+  std::optional<SearchIndex> search(std::in_place, grid.nominal->corners(), grid.grid);
   phases.done("grid-build");
   phases.time("write", [&] {
     write_file(folder / (stem(options.nominal) + ".grid"), OutputKind::binary,

@@ -6,6 +6,7 @@
 
 #include "sampling/sampling_step.hpp"
 #include "statistics/tolerance.hpp"
+#include "statistics/value_range.hpp"
 #include "util/error.hpp"
 
 namespace ncv::cmd {
@@ -38,14 +39,7 @@ CLI::Validator valid_zone() {
 }
 
 CLI::Validator valid_range() {
-  return refusing([](const std::string& text) {
-    const Tolerance range = parse_tolerance(text);
-    if (!(range.lower < range.upper)) {
-      throw UsageError("range '" + text +
-                       "' has no width: its lower limit must be below its "
-                       "upper limit");
-    }
-  });
+  return refusing([](const std::string& text) { parse_value_range(text); });
 }
 
 CLI::Validator valid_positive_length() {

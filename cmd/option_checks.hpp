@@ -10,7 +10,7 @@ namespace ncv::cmd {
 
 CLI::Validator valid_step();             // --step: SamplingStep::parse
 CLI::Validator valid_zone();             // --tol: parse_tolerance (a zero-width zone is allowed)
-CLI::Validator valid_range();            // --range, --histogram-range: a zone of some width
+CLI::Validator valid_range();            // --range, --histogram-range: parse_value_range
 CLI::Validator valid_positive_length();  // --cell: a finite length above zero
 CLI::Validator valid_count();            // --head: a whole number, 0 or more
 

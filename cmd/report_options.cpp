@@ -31,8 +31,7 @@ PartReport make_report(const DistanceSet& distances, const ReportOptions& option
   HistogramOptions histogram;
   histogram.bins = options.bins;
   if (!options.range.empty()) {
-    const Tolerance range = parse_tolerance(options.range);
-    histogram.range = ValueRange{range.lower, range.upper};
+    histogram.range = parse_value_range(options.range);
   }
   PartReport report =
       make_part_report(distances, parse_tolerance_option(options.tolerance), histogram);

@@ -49,13 +49,13 @@ void check_inputs(std::span<const Vec3> points, std::span<const Vec3> sample_nor
 // Everything one thread needs: a grid searcher (it owns the per-triangle stamps) and its
 // share of the counters.
 struct Worker {
-  std::optional<GridSearch> search;
+  std::optional<GridSearcher> search;
   SearchCounters counters;
 };
 
 class SignedDistanceJob {
  public:
-  SignedDistanceJob(const NominalSurface& nominal, const SearchGrid* grid,
+  SignedDistanceJob(const NominalSurface& nominal, const SearchIndex* grid,
                     std::span<const Vec3> points, std::span<const Vec3> normals, SignMethod method)
       : nominal_(nominal), grid_(grid), points_(points), normals_(normals), method_(method) {
     if (method_ == SignMethod::winding)
@@ -116,7 +116,7 @@ class SignedDistanceJob {
   }
 
   const NominalSurface& nominal_;
-  const SearchGrid* grid_;
+  const SearchIndex* grid_;
   std::span<const Vec3> points_;
   std::span<const Vec3> normals_;
   SignMethod method_;
@@ -130,7 +130,7 @@ SignMethod resolve_sign_method(const NominalSurface& nominal, SignMethod request
   return requested == SignMethod::automatic ? nominal.automatic_sign_method() : requested;
 }
 
-DistanceField compute_signed_distances(const NominalSurface& nominal, const SearchGrid* grid,
+DistanceField compute_signed_distances(const NominalSurface& nominal, const SearchIndex* grid,
                                        std::span<const Vec3> points,
                                        std::span<const Vec3> sample_normals, SignMethod method,
                                        SearchStatistics* statistics,

@@ -1,6 +1,7 @@
-// The distance step (paper §3.2, SPEC "The algorithm" step 2): for every query point, the
-// exact distance to the nearest nominal triangle, signed positive outside the nominal solid
-// (excess material) and negative inside (gouge), with the closest point and face.
+// Signed distances to the nominal (paper §3.2, docs/METHOD.md "Signed distance"): for every
+// query point, the exact distance to the nearest nominal triangle, signed positive outside
+// the nominal solid (excess material) and negative inside (gouge), with the closest point
+// and face.
 //
 // The search runs over the background grid, or over every triangle when no grid is given;
 // both return bit-identical results (see closest_point_search.hpp). A point exactly on the
@@ -28,7 +29,7 @@
 
 #include "nominal/nominal_surface.hpp"
 #include "nominal/sign_method.hpp"
-#include "search/search_grid.hpp"
+#include "search/search_index.hpp"
 #include "util/buffer.hpp"
 
 namespace ncv {
@@ -66,7 +67,7 @@ SignMethod resolve_sign_method(const NominalSurface& nominal, SignMethod request
 // otherwise, naming "query points"). `sample_normals` is read only by SignMethod::paper
 // and must then hold one normal per point (UsageError otherwise). `grid` must have been
 // made from this nominal's corners; nullptr searches by brute force.
-DistanceField compute_signed_distances(const NominalSurface& nominal, const SearchGrid* grid,
+DistanceField compute_signed_distances(const NominalSurface& nominal, const SearchIndex* grid,
                                        std::span<const Vec3> points,
                                        std::span<const Vec3> sample_normals, SignMethod method,
                                        SearchStatistics* statistics = nullptr,

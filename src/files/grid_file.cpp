@@ -20,7 +20,7 @@ nlohmann::json topology_meta(const TopologyReport& t) {
           {"signed_volume", t.signed_volume}};
 }
 
-nlohmann::json grid_meta(const NominalGrid& g, const GridStatistics& s) {
+nlohmann::json grid_meta(const PreparedNominal& g, const GridStatistics& s) {
   const BoundingBox box = bounding_box(g.mesh);
   const NominalSurface& nominal = *g.nominal;
   return {{"tool", "ncverify " NCV_VERSION},
@@ -54,9 +54,9 @@ T number_field(const Container& c, const std::string& pointer) {
 
 }  // namespace
 
-NominalGrid build_nominal_grid(Mesh mesh, const std::string& source, const GridOptions& options,
-                               GridStatistics* statistics) {
-  NominalGrid g;
+PreparedNominal build_nominal_grid(Mesh mesh, const std::string& source, const GridOptions& options,
+                                   GridStatistics* statistics) {
+  PreparedNominal g;
   g.nominal_source = source;
   g.mesh = std::move(mesh);
   g.nominal_hash = mesh_hash(g.mesh);
@@ -65,7 +65,7 @@ NominalGrid build_nominal_grid(Mesh mesh, const std::string& source, const GridO
   return g;
 }
 
-void write_grid_file(const NominalGrid& g, const GridStatistics& statistics, OutputFile& out) {
+void write_grid_file(const PreparedNominal& g, const GridStatistics& statistics, OutputFile& out) {
   ContainerWriter writer(FileKind::grid, kGridFormatVersion, grid_meta(g, statistics));
   writer.add<double>("nominal_vertices", flat_coordinates(g.mesh.vertices),
                      {g.mesh.vertex_count(), 3});
@@ -77,12 +77,12 @@ void write_grid_file(const NominalGrid& g, const GridStatistics& statistics, Out
   writer.write(out);
 }
 
-NominalGrid read_grid_file(const std::string& path) {
+PreparedNominal read_grid_file(const std::string& path) {
   return load_nominal_grid(Container::read(path, FileKind::grid, kGridFormatVersion));
 }
 
-NominalGrid load_nominal_grid(const Container& c) {
-  NominalGrid g;
+PreparedNominal load_nominal_grid(const Container& c) {
+  PreparedNominal g;
   const std::uint64_t V = c.count("/nominal/vertices"), T = c.count("/nominal/triangles");
   g.mesh.vertices = c.get_rows<double, Vec3>("nominal_vertices", V);
   g.mesh.triangles = c.get_rows<std::uint32_t, Triangle>("nominal_triangles", T);
@@ -108,7 +108,7 @@ NominalGrid load_nominal_grid(const Container& c) {
     g.grid.dims[axis] = dims[axis].get<std::uint32_t>();
   }
   g.grid.cell_size = number_field<double>(c, "/grid/cell_size");
-  const auto cells = UniformGrid::checked_cell_count(g.grid.dims);
+  const auto cells = BackgroundGrid::checked_cell_count(g.grid.dims);
   if (!cells) c.fail("grid dimensions overflow");
   g.grid.cell_offsets = c.get<std::uint64_t>("cell_offsets", *cells + 1);
   g.grid.cell_triangles = c.get<std::uint32_t>("cell_triangles", c.count("/grid/references"));

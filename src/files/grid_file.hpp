@@ -7,29 +7,30 @@
 
 #include "files/container.hpp"
 #include "nominal/nominal_surface.hpp"
+#include "search/background_grid.hpp"
 #include "search/grid_builder.hpp"
-#include "search/uniform_grid.hpp"
 
 namespace ncv {
 
 // A nominal prepared for queries together with its grid, as grid-build makes it and
 // distance reads it back.
-struct NominalGrid {
+struct PreparedNominal {
   std::unique_ptr<NominalSurface> nominal;
-  UniformGrid grid;
+  BackgroundGrid grid;
   Mesh mesh;  // the nominal as read (global coordinates), what the file stores
   std::uint64_t nominal_hash = 0;
   std::string nominal_source;
 };
 
 // Prepares the nominal (topology, orientation, sign method) and builds its grid.
-NominalGrid build_nominal_grid(Mesh mesh, const std::string& source, const GridOptions& options,
-                               GridStatistics* statistics);
+PreparedNominal build_nominal_grid(Mesh mesh, const std::string& source, const GridOptions& options,
+                                   GridStatistics* statistics);
 
-void write_grid_file(const NominalGrid& grid, const GridStatistics& statistics, OutputFile& out);
+void write_grid_file(const PreparedNominal& grid, const GridStatistics& statistics,
+                     OutputFile& out);
 // Loads and validates (hash, indices, grid consistency) a grid file.
-NominalGrid read_grid_file(const std::string& path);
+PreparedNominal read_grid_file(const std::string& path);
 // The same from a parsed container (read_grid_file's second half; the fuzz target's entry).
-NominalGrid load_nominal_grid(const Container& container);
+PreparedNominal load_nominal_grid(const Container& container);
 
 }  // namespace ncv

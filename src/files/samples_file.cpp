@@ -29,9 +29,9 @@ void validate_mesh(const Mesh& mesh, const Container& from) {
 // Vertex samples are 0..k-1 in vertex order, exactly the vertices of sampled triangles.
 std::uint64_t validate_vertex_samples(const SampleSet& set, const Container& from) {
   std::vector<bool> needed(set.workpiece.vertex_count(), false);
-  for (std::size_t t = 0; t < set.tri_n.size(); ++t) {
-    if (set.tri_n[t] == 1) from.fail("a triangle has lattice size 1");
-    if (set.tri_n[t] == 0) continue;
+  for (std::size_t t = 0; t < set.lattice_sizes.size(); ++t) {
+    if (set.lattice_sizes[t] == 1) from.fail("a triangle has lattice size 1");
+    if (set.lattice_sizes[t] == 0) continue;
     for (std::uint32_t v : set.workpiece.triangles[t]) needed[v] = true;
   }
   std::uint64_t next = 0;
@@ -45,9 +45,9 @@ std::uint64_t validate_vertex_samples(const SampleSet& set, const Container& fro
 void validate_lattice(const SampleSet& set, const Container& from) {
   std::uint64_t next = validate_vertex_samples(set, from);
   const std::uint64_t samples = set.sample_count();
-  for (std::size_t t = 0; t < set.tri_n.size(); ++t) {
-    const std::uint64_t own = lattice_interior_count(set.tri_n[t]);
-    if (set.tri_first[t] != next || own > samples - std::min(samples, next)) {
+  for (std::size_t t = 0; t < set.lattice_sizes.size(); ++t) {
+    const std::uint64_t own = lattice_interior_count(set.lattice_sizes[t]);
+    if (set.first_interior_sample[t] != next || own > samples - std::min(samples, next)) {
       from.fail("per-triangle sample offsets are inconsistent");
     }
     next += own;
@@ -55,8 +55,9 @@ void validate_lattice(const SampleSet& set, const Container& from) {
   if (next != samples) from.fail("sample count does not match the lattice");
   for (std::uint64_t s = 0; s < samples; ++s) {
     const std::uint32_t t = set.owner[s];
-    if (t >= set.tri_n.size() || set.tri_n[t] < 2) from.fail("a sample has an invalid owner");
-    const std::uint64_t n = set.tri_n[t];
+    if (t >= set.lattice_sizes.size() || set.lattice_sizes[t] < 2)
+      from.fail("a sample has an invalid owner");
+    const std::uint64_t n = set.lattice_sizes[t];
     const std::uint64_t i = set.lattice_i[s], j = set.lattice_j[s];
     if (i + j > n - 1 || set.sample_at(t, set.lattice_i[s], set.lattice_j[s]) != s) {
       from.fail("a sample's lattice coordinates are inconsistent");
@@ -97,8 +98,8 @@ void add_sample_sections(ContainerWriter& writer, const SampleSet& set) {
                       S = set.sample_count();
   writer.add<double>("workpiece_vertices", flat_coordinates(set.workpiece.vertices), {V, 3});
   writer.add<std::uint32_t>("workpiece_triangles", flat_indices(set.workpiece.triangles), {T, 3});
-  writer.add<std::uint32_t>("tri_n", set.tri_n, {T});
-  writer.add<std::uint64_t>("tri_first", set.tri_first, {T});
+  writer.add<std::uint32_t>("tri_n", set.lattice_sizes, {T});
+  writer.add<std::uint64_t>("tri_first", set.first_interior_sample, {T});
   writer.add<std::uint32_t>("vertex_sample", set.vertex_sample, {V});
   writer.add<double>("positions", flat_coordinates(set.positions), {S, 3});
   writer.add<std::uint32_t>("owner", set.owner, {S});
@@ -126,8 +127,8 @@ SampleSet load_sample_set(const Container& c) {
   if (!(set.step > 0) || !std::isfinite(set.step)) c.fail("sampling step is not positive");
   set.step_spec = c.field("/sampling/step_spec").get<std::string>();
   set.scheme = parse_scheme(c.field("/sampling/scheme").get<std::string>(), c);
-  set.tri_n = c.get<std::uint32_t>("tri_n", T);
-  set.tri_first = c.get<std::uint64_t>("tri_first", T);
+  set.lattice_sizes = c.get<std::uint32_t>("tri_n", T);
+  set.first_interior_sample = c.get<std::uint64_t>("tri_first", T);
   set.vertex_sample = c.get<std::uint32_t>("vertex_sample", V);
   set.positions = c.get_rows<double, Vec3>("positions", S);
   set.owner = c.get<std::uint32_t>("owner", S);

@@ -1,6 +1,7 @@
 #include "mesh/mesh_reader.hpp"
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
@@ -147,9 +148,14 @@ Mesh parse_mesh(std::span<const char> bytes, const std::string& source, MeshRead
   return mesh;
 }
 
-Mesh read_mesh(const std::string& path, MeshReadReport* report) {
+Mesh read_mesh(const std::string& path) {
   const InputBytes bytes = read_input_bytes(path);
-  return parse_mesh(bytes.span(), input_name(path), report);
+  MeshReadReport report;
+  Mesh mesh = parse_mesh(bytes.span(), input_name(path), &report);
+  spdlog::debug("read {}: {}, {} vertices, {} triangles ({} of zero area)", input_name(path),
+                format_name(report.format), mesh.vertex_count(), mesh.triangle_count(),
+                report.degenerate_triangles);
+  return mesh;
 }
 
 }  // namespace ncv

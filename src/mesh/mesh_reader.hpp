@@ -25,7 +25,8 @@ struct MeshReadReport {
   std::uint64_t degenerate_triangles = 0;  // zero area after welding
 };
 
-Mesh read_mesh(const std::string& path, MeshReadReport* report = nullptr);
+// Logs (debug, shown with -v) the format, the counts and the zero-area triangles.
+Mesh read_mesh(const std::string& path);
 Mesh parse_mesh(std::span<const char> bytes, const std::string& source,
                 MeshReadReport* report = nullptr);
 

@@ -1,4 +1,4 @@
-// Colour maps from signed error to RGB (SPEC "Colouring").
+// Colour maps from signed error to RGB (docs/METHOD.md "Colouring").
 //
 //   tolerance  the paper's scheme: green inside the tolerance zone, red for excess and
 //              blue for gouge, from a pale shade at the limit to a deep one at the end of

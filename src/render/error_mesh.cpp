@@ -49,7 +49,7 @@ ErrorMesh lattice_error_mesh(const SampleSet& samples, std::span<const double> d
     return extra_vertex[v];
   };
   for (std::size_t t = 0; t < workpiece.triangle_count(); ++t) {
-    if (samples.tri_n[t] == 0) {
+    if (samples.lattice_sizes[t] == 0) {
       const Triangle& corners = workpiece.triangles[t];
       out.mesh.triangles.push_back(
           {corner_vertex(corners[0]), corner_vertex(corners[1]), corner_vertex(corners[2])});

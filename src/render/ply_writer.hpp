@@ -1,5 +1,5 @@
 // Binary little-endian PLY of a coloured error mesh for MeshLab and CloudCompare
-// (SPEC "Colouring"). Per vertex: float x y z (model coordinates), uchar red green blue
+// (docs/METHOD.md "Colouring"). Per vertex: float x y z (model coordinates), uchar red green blue
 // baked from the colour map, float quality (MeshLab's per-vertex quality) and float
 // scalar_signed_distance (CloudCompare's scalar field), both the signed error, NaN where
 // no sample lies. Faces: list uchar int vertex_indices.

@@ -1,4 +1,4 @@
-// The sub-triangles of the sampling lattice (SPEC "Error measures"): a triangle with
+// The sub-triangles of the sampling lattice (docs/METHOD.md "Error measures"): a triangle with
 // lattice size n splits into (n-1)^2 sub-triangles of equal area |T|/(n-1)^2, the
 // "upward" (i,j),(i+1,j),(i,j+1) and the "downward" (i+1,j),(i+1,j+1),(i,j+1) ones.
 // Corners are listed counter-clockwise in (i, j), so every sub-triangle keeps the
@@ -25,7 +25,7 @@ double lattice_triangle_area(const SampleSet& samples, std::size_t t);
 // when t is not sampled), upward and downward ones interleaved along each row.
 template <class Visit>
 void for_each_lattice_triangle(const SampleSet& samples, std::size_t t, Visit&& visit) {
-  const std::uint32_t n = samples.tri_n[t];
+  const std::uint32_t n = samples.lattice_sizes[t];
   for (std::uint32_t i = 0; i + 1 < n; ++i) {
     // Row i has n-i points, row i+1 one fewer.
     std::uint64_t low = samples.sample_at(t, i, 0);

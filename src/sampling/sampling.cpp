@@ -35,7 +35,7 @@ std::uint32_t assign_vertex_samples(SampleSet& set) {
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, mesh.triangle_count(), 4096), [&](const auto& r) {
         for (std::size_t t = r.begin(); t != r.end(); ++t) {
-          if (set.tri_n[t] == 0) continue;
+          if (set.lattice_sizes[t] == 0) continue;
           const auto triangle = static_cast<std::uint32_t>(t);
           for (const std::uint32_t v : mesh.triangles[t]) {
             std::atomic_ref<std::uint32_t> owner(owner_of_vertex[v]);
@@ -53,7 +53,7 @@ std::uint32_t assign_vertex_samples(SampleSet& set) {
     set.vertex_sample[v] = count++;
     const auto& corners = mesh.triangles[t];
     const int corner = corners[0] == v ? 0 : corners[1] == v ? 1 : 2;  // the first that is v
-    const auto [i, j] = corner_lattice_coordinates(corner, set.tri_n[t]);
+    const auto [i, j] = corner_lattice_coordinates(corner, set.lattice_sizes[t]);
     set.positions.push_back(mesh.vertices[v]);
     set.owner.push_back(t);
     set.lattice_i.push_back(i);
@@ -66,16 +66,17 @@ bool is_corner(std::uint32_t i, std::uint32_t j, std::uint32_t n) {
   return (i == 0 && j == 0) || (i == n - 1 && j == 0) || (i == 0 && j == n - 1);
 }
 
-// Writes the non-corner lattice points of triangle t from tri_first[t] on, in row-major order.
+// Writes the non-corner lattice points of triangle t from first_interior_sample[t] on, in row-major
+// order.
 void fill_triangle_samples(SampleSet& set, std::size_t t) {
-  const std::uint32_t n = set.tri_n[t];
+  const std::uint32_t n = set.lattice_sizes[t];
   if (n < 3) return;
   const Mesh& mesh = set.workpiece;
   const Vec3 a = mesh.corner(t, 0);
   const double steps = n - 1;
   const Vec3 e1 = (mesh.corner(t, 1) - a) / steps;
   const Vec3 e2 = (mesh.corner(t, 2) - a) / steps;
-  std::uint64_t s = set.tri_first[t];
+  std::uint64_t s = set.first_interior_sample[t];
   for (std::uint32_t i = 0; i < n; ++i) {
     for (std::uint32_t j = 0; j + i < n; ++j) {
       if (is_corner(i, j, n)) continue;
@@ -98,14 +99,14 @@ std::uint32_t lattice_size(double area, double step) {
 }
 
 std::uint64_t SampleSet::sample_at(std::size_t t, std::uint32_t i, std::uint32_t j) const {
-  const std::uint64_t n = tri_n[t];
+  const std::uint64_t n = lattice_sizes[t];
   if (i == 0 && j == 0) return vertex_sample[workpiece.triangles[t][0]];
   if (i == n - 1 && j == 0) return vertex_sample[workpiece.triangles[t][1]];
   if (i == 0 && j == n - 1) return vertex_sample[workpiece.triangles[t][2]];
   // Row-major rank of (i, j) minus the corners that precede it: (0,0) always, and
   // (0,n-1) once past row 0.
   const std::uint64_t rank = i * n - i * (i - 1) / 2 + j;
-  return tri_first[t] + rank - (i == 0 ? 1 : 2);
+  return first_interior_sample[t] + rank - (i == 0 ? 1 : 2);
 }
 
 // One pass computes each triangle's area once for both the sizes and the report's counts,
@@ -176,16 +177,16 @@ SampleSet sample_mesh(Mesh workpiece, SamplingPlan plan, SamplingReport* report)
   set.step = plan.step;
   set.scheme = plan.scheme;
   set.workpiece_hash = mesh_hash(set.workpiece);
-  set.tri_n = std::move(plan.lattice_sizes);
+  set.lattice_sizes = std::move(plan.lattice_sizes);
 
   const std::uint32_t vertex_samples = assign_vertex_samples(set);
-  set.tri_first.resize(set.tri_n.size());
+  set.first_interior_sample.resize(set.lattice_sizes.size());
   std::uint64_t next = vertex_samples;
-  for (std::size_t t = 0; t < set.tri_n.size(); ++t) {
-    set.tri_first[t] = next;
+  for (std::size_t t = 0; t < set.lattice_sizes.size(); ++t) {
+    set.first_interior_sample[t] = next;
     // Only reachable past the memory guard (--force): a wrapped count would size the
     // arrays too small for the lattice written into them.
-    if (__builtin_add_overflow(next, lattice_interior_count(set.tri_n[t]), &next)) {
+    if (__builtin_add_overflow(next, lattice_interior_count(set.lattice_sizes[t]), &next)) {
       throw UsageError(
           fmt::format("sampling at step {} would give more than 2^64 samples", set.step));
     }
@@ -194,11 +195,12 @@ SampleSet sample_mesh(Mesh workpiece, SamplingPlan plan, SamplingReport* report)
   set.owner.resize(next);
   set.lattice_i.resize(next);
   set.lattice_j.resize(next);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, set.tri_n.size(), 1024), [&](const auto& r) {
-    for (std::size_t t = r.begin(); t != r.end(); ++t) {
-      fill_triangle_samples(set, t);
-    }
-  });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, set.lattice_sizes.size(), 1024),
+                    [&](const auto& r) {
+                      for (std::size_t t = r.begin(); t != r.end(); ++t) {
+                        fill_triangle_samples(set, t);
+                      }
+                    });
 
   if (report) {
     *report = plan.counts;

@@ -1,10 +1,10 @@
-// Lattice sampling of the workpiece (paper §3.1, SPEC "Sampling").
+// Lattice sampling of the workpiece (paper §3.1, docs/METHOD.md "Sampling").
 //
 // Triangle t with corners A, B, C and lattice size n holds the points
 //   P(i,j) = A + i(B-A)/(n-1) + j(C-A)/(n-1),  0 <= i <= n-1,  0 <= j <= n-1-i.
 // The three corners are mesh vertices and are shared: every sampled mesh vertex is one
 // sample (vertex_sample), every other lattice point belongs to its triangle alone and is
-// numbered consecutively from tri_first[t] in row-major (i, then j) order.
+// numbered consecutively from first_interior_sample[t] in row-major (i, then j) order.
 #pragma once
 
 #include <cstdint>
@@ -42,8 +42,9 @@ struct SampleSet {
   SamplingScheme scheme = SamplingScheme::all;
   std::uint64_t workpiece_hash = 0;
 
-  std::vector<std::uint32_t> tri_n;          // lattice size per triangle; 0 = not sampled
-  std::vector<std::uint64_t> tri_first;      // first own (non-corner) sample of each triangle
+  std::vector<std::uint32_t> lattice_sizes;  // lattice size per triangle; 0 = not sampled
+  std::vector<std::uint64_t>
+      first_interior_sample;                 // first own (non-corner) sample of each triangle
   std::vector<std::uint32_t> vertex_sample;  // sample of each mesh vertex, or kNoSample
 
   std::vector<Vec3> positions;           // per sample

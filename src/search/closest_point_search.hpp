@@ -22,7 +22,7 @@
 // would defeat the margin, and brute force itself would be that far from the truth.)
 //
 // Each triangle is tested at most once per query (a per-searcher stamp per triangle), and
-// nothing is allocated per query: one GridSearch per thread.
+// nothing is allocated per query: one GridSearcher per thread.
 //
 // Two shortcuts make the bound tight early without changing the result; the result does
 // not depend on the order triangles are tested in, since `improves` is a strict total
@@ -51,9 +51,9 @@
 #include <vector>
 
 #include "geometry/closest_point.hpp"
+#include "search/background_grid.hpp"
 #include "search/reference_boxes.hpp"
-#include "search/search_grid.hpp"
-#include "search/uniform_grid.hpp"
+#include "search/search_index.hpp"
 
 namespace ncv {
 
@@ -81,10 +81,10 @@ inline bool improves(double squared_distance, std::uint32_t triangle, const Clos
 ClosestHit brute_force_closest(std::span<const TriangleCorners> triangles, Vec3 q,
                                SearchCounters& counters);
 
-class GridSearch {
+class GridSearcher {
  public:
-  // `search_grid` is shared by the searchers of all threads and must outlive them.
-  explicit GridSearch(const SearchGrid& search_grid);
+  // `index` is shared by the searchers of all threads and must outlive them.
+  explicit GridSearcher(const SearchIndex& index);
 
   ClosestHit closest(Vec3 q, SearchCounters& counters);
   // The next query starts without the previous one's closest triangle.
@@ -101,15 +101,15 @@ class GridSearch {
   void test(Query& query, std::uint32_t t);
   bool bound_inside_start_cell(const Query& query) const;
   bool covers_grid(const Query& query) const;
-  // grid_.cell_bound(axis, i), the same expression.
+  // grid_.cell_bound(axis, i), from the origin copied into the searcher.
   double cell_bound(int axis, std::int64_t i) const {
-    return origin_[axis] + static_cast<double>(i) * grid_.cell_size;
+    return ncv::cell_bound(origin_[axis], grid_.cell_size, i);
   }
   double cell_gap(const Query& query, int axis, std::int64_t i) const;
   double unvisited_squared_distance(const Query& query) const;
 
   std::span<const TriangleCorners> triangles_;
-  const UniformGrid& grid_;
+  const BackgroundGrid& grid_;
   std::span<const BoxBlock> boxes_;
   // The grid's origin, box and last cell index by axis.
   std::array<double, 3> origin_, box_min_, box_max_;

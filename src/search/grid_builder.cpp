@@ -20,7 +20,7 @@ struct Layout {
   std::array<std::uint32_t, 3> dims{1, 1, 1};
   double slack = 0;
 
-  double bound(int axis, std::int64_t i) const { return origin[axis] + static_cast<double>(i) * h; }
+  double bound(int axis, std::int64_t i) const { return cell_bound(origin[axis], h, i); }
   std::uint64_t cell(std::int64_t i, std::int64_t j, std::int64_t k) const {
     return (static_cast<std::uint64_t>(k) * dims[1] + static_cast<std::uint64_t>(j)) * dims[0] +
            static_cast<std::uint64_t>(i);
@@ -221,7 +221,7 @@ std::vector<ReferenceChunk> touched_cells(const NominalSurface& nominal, const L
 
 // Counting sort of the references by cell; scanning triangles in order keeps every cell's
 // list ascending.
-void fill_cell_lists(UniformGrid& grid, const std::vector<ReferenceChunk>& chunks) {
+void fill_cell_lists(BackgroundGrid& grid, const std::vector<ReferenceChunk>& chunks) {
   grid.cell_offsets.assign(grid.cell_count() + 1, 0);
   std::uint64_t references = 0;
   for (const ReferenceChunk& chunk : chunks) {
@@ -242,7 +242,7 @@ void fill_cell_lists(UniformGrid& grid, const std::vector<ReferenceChunk>& chunk
   }
 }
 
-void summarise(const UniformGrid& grid, std::size_t triangles, GridStatistics& stats) {
+void summarise(const BackgroundGrid& grid, std::size_t triangles, GridStatistics& stats) {
   stats.dims = grid.dims;
   stats.cells = grid.cell_count();
   stats.references = grid.cell_triangles.size();
@@ -271,8 +271,8 @@ double default_cell_size(const NominalSurface& nominal) {
   return diagonal > 0 ? diagonal / std::cbrt(triangles) : 1.0;
 }
 
-UniformGrid build_uniform_grid(const NominalSurface& nominal, const GridOptions& options,
-                               GridStatistics* statistics) {
+BackgroundGrid build_uniform_grid(const NominalSurface& nominal, const GridOptions& options,
+                                  GridStatistics* statistics) {
   if (options.cell_size != 0 && !(std::isfinite(options.cell_size) && options.cell_size > 0)) {
     throw UsageError(fmt::format("grid cell size {} is not a positive number", options.cell_size));
   }
@@ -281,7 +281,7 @@ UniformGrid build_uniform_grid(const NominalSurface& nominal, const GridOptions&
       options.cell_size > 0 ? options.cell_size : default_cell_size(nominal);
   const Layout layout = choose_layout(nominal, stats.requested_cell_size, stats);
 
-  UniformGrid grid;
+  BackgroundGrid grid;
   grid.origin = layout.origin;
   grid.cell_size = layout.h;
   grid.dims = layout.dims;

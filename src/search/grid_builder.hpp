@@ -37,7 +37,7 @@
 #include <cstdint>
 
 #include "nominal/nominal_surface.hpp"
-#include "search/uniform_grid.hpp"
+#include "search/background_grid.hpp"
 
 namespace ncv {
 
@@ -69,7 +69,7 @@ struct GridStatistics {
 double default_cell_size(const NominalSurface& nominal);
 
 // Throws UsageError for a cell size option that is not a finite positive number.
-UniformGrid build_uniform_grid(const NominalSurface& nominal, const GridOptions& options = {},
-                               GridStatistics* statistics = nullptr);
+BackgroundGrid build_uniform_grid(const NominalSurface& nominal, const GridOptions& options = {},
+                                  GridStatistics* statistics = nullptr);
 
 }  // namespace ncv

@@ -46,7 +46,7 @@ FloatBox float_box(const TriangleCorners& c) {
   return box;
 }
 
-void fill_blocks(std::span<const FloatBox> triangle_boxes, const UniformGrid& grid,
+void fill_blocks(std::span<const FloatBox> triangle_boxes, const BackgroundGrid& grid,
                  std::span<BoxBlock> blocks, std::size_t begin, std::size_t end) {
   for (std::size_t b = begin; b < end; ++b) {
     BoxBlock& block = blocks[b];
@@ -72,7 +72,7 @@ void fill_blocks(std::span<const FloatBox> triangle_boxes, const UniformGrid& gr
 // read the corners in cell order, which missed the cache about once per reference on a
 // large nominal.
 Buffer<BoxBlock> build_reference_boxes(std::span<const TriangleCorners> triangles,
-                                       const UniformGrid& grid) {
+                                       const BackgroundGrid& grid) {
   Buffer<FloatBox> triangle_boxes(triangles.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles.size(), 1 << 14),
                     [&](const tbb::blocked_range<std::size_t>& range) {

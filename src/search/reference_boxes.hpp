@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "geometry/closest_point.hpp"
-#include "search/uniform_grid.hpp"
+#include "search/background_grid.hpp"
 #include "util/buffer.hpp"
 
 namespace ncv {
@@ -35,6 +35,6 @@ float float_at_or_above(double x);
 
 // Built in parallel; `grid` must have been built for (or validated against) `triangles`.
 Buffer<BoxBlock> build_reference_boxes(std::span<const TriangleCorners> triangles,
-                                       const UniformGrid& grid);
+                                       const BackgroundGrid& grid);
 
 }  // namespace ncv

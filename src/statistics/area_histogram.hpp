@@ -9,13 +9,9 @@
 #include <vector>
 
 #include "geometry/linear_patch.hpp"
+#include "statistics/value_range.hpp"
 
 namespace ncv {
-
-struct ValueRange {
-  double lo = 0;
-  double hi = 0;
-};
 
 struct HistogramOptions {
   std::uint32_t bins = 64;

@@ -46,7 +46,7 @@ class RegionBuilder {
   }
 
   void connect_lattices() {
-    for (std::size_t t = 0; t < samples_.tri_n.size(); ++t) {
+    for (std::size_t t = 0; t < samples_.lattice_sizes.size(); ++t) {
       for_each_lattice_triangle(samples_, t,
                                 [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
                                   connect(a, b);
@@ -61,7 +61,7 @@ class RegionBuilder {
     std::vector<EdgeSide> sides;
     const Mesh& mesh = samples_.workpiece;
     for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-      if (samples_.tri_n[t] < 3) continue;
+      if (samples_.lattice_sizes[t] < 3) continue;
       for (int k = 0; k < 3; ++k) {
         const std::uint32_t a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
         sides.push_back({std::min(a, b), std::max(a, b), static_cast<std::uint32_t>(t), k});
@@ -112,7 +112,7 @@ class RegionBuilder {
   void connect_along_edge(std::span<const EdgeSide> sides) {
     std::vector<EdgePoint> points;
     for (const EdgeSide& side : sides) {
-      const std::uint32_t n = samples_.tri_n[side.triangle];
+      const std::uint32_t n = samples_.lattice_sizes[side.triangle];
       const bool reversed = samples_.workpiece.triangles[side.triangle][side.corner] != side.v0;
       for (std::uint32_t m = 1; m + 1 < n; ++m) {
         const auto [i, j] = edge_lattice_point(side.corner, m, n);
@@ -148,8 +148,8 @@ class RegionBuilder {
   }
 
   void add_areas(std::vector<ErrorRegion>& regions) {
-    for (std::size_t t = 0; t < samples_.tri_n.size(); ++t) {
-      if (samples_.tri_n[t] < 2) continue;
+    for (std::size_t t = 0; t < samples_.lattice_sizes.size(); ++t) {
+      if (samples_.lattice_sizes[t] < 2) continue;
       const double area = lattice_triangle_area(samples_, t);
       for_each_lattice_triangle(
           samples_, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {

@@ -44,9 +44,9 @@ void count_triangles(const SampleSet& samples, ErrorStatistics& stats) {
         for (std::size_t t = begin; t < end; ++t) {
           const double area = triangle_area(mesh, t);
           part.area += area;
-          if (samples.tri_n[t] == 0) {
+          if (samples.lattice_sizes[t] == 0) {
             ++part.unsampled;
-          } else if (samples.tri_n[t] == 2 && lattice_size(area, samples.step) < 2) {
+          } else if (samples.lattice_sizes[t] == 2 && lattice_size(area, samples.step) < 2) {
             ++part.vertex_only;
           }
         }
@@ -105,7 +105,7 @@ Moments integrate(std::span<const LinearPatch> patches, double shift) {
       });
 }
 
-// The mean is SPEC's d_mean = (1/|S1|) ∫ d dS over the lattice: divided by the whole
+// The mean is docs/METHOD.md's d_mean = (1/|S1|) ∫ d dS over the lattice: divided by the whole
 // workpiece area, as the paper's eq. 7, so under scheme II the skipped triangles weigh in
 // with nothing (that is the paper's comparison of the schemes). RMS and spread describe
 // the sampled surface. The variance integrates (d - m)^2 in a second pass rather than

@@ -1,4 +1,4 @@
-// The error measures of SPEC "Error measures" and paper eqs. 5-8, from the signed
+// The error measures of docs/METHOD.md "Error measures" (paper eqs. 5-8), from the signed
 // distance of every sample.
 //
 // Every area-weighted measure treats the error as the piecewise-linear interpolant of the
@@ -6,7 +6,7 @@
 // exactly for that interpolant: the mean is paper eq. 8 summed, RMS and standard deviation
 // integrate its square in closed form, and the percentiles, histogram and tolerance areas
 // all come from the exact distribution of its values over the surface. The mean divides by
-// the whole workpiece area |S1| (SPEC, paper eq. 7); the other measures describe the
+// the whole workpiece area |S1| (paper eq. 7); the other measures describe the
 // sampled surface, which is the whole of it under scheme I.
 #pragma once
 

@@ -35,7 +35,7 @@ double overlap_share(const BoundingBox& a, const BoundingBox& b) {
 // refused. Only suspicious (warned, measured anyway): little overlap, no overlap at close
 // range, very different sizes, or the nominal itself given as the workpiece (zero
 // everywhere; a legitimate self-check, a mix-up otherwise).
-void check_belong_together(const SampleSet& samples, const NominalGrid& grid) {
+void check_belong_together(const SampleSet& samples, const PreparedNominal& grid) {
   const BoundingBox workpiece = bounding_box(samples.workpiece);
   const BoundingBox nominal = bounding_box(grid.mesh);
   refuse_if_apart(workpiece, samples.workpiece_source, nominal, grid.nominal_source);
@@ -71,8 +71,9 @@ void refuse_if_apart(const BoundingBox& workpiece, const std::string& workpiece_
   }
 }
 
-DistanceSet measure_distances(SampleSet samples, const NominalGrid& grid, const SearchGrid& search,
-                              const DistanceStepOptions& options, double* seconds) {
+DistanceSet measure_distances(SampleSet samples, const PreparedNominal& grid,
+                              const SearchIndex& search, const DistanceStepOptions& options,
+                              double* seconds) {
   check_belong_together(samples, grid);
   const SignMethod method = resolve_sign_method(*grid.nominal, options.sign);
   const std::vector<Vec3> normals =

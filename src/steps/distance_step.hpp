@@ -5,7 +5,7 @@
 #include "files/distance_file.hpp"
 #include "files/grid_file.hpp"
 #include "sampling/sampling.hpp"
-#include "search/search_grid.hpp"
+#include "search/search_index.hpp"
 
 namespace ncv {
 
@@ -23,8 +23,9 @@ void refuse_if_apart(const BoundingBox& workpiece, const std::string& workpiece_
 // the same mesh (a wrong file, unit or frame?), then measures every sample; `seconds`
 // receives the time the measuring took. `search` is made from grid.nominal's corners and
 // grid.grid (not read with brute_force).
-DistanceSet measure_distances(SampleSet samples, const NominalGrid& grid, const SearchGrid& search,
-                              const DistanceStepOptions& options, double* seconds = nullptr);
+DistanceSet measure_distances(SampleSet samples, const PreparedNominal& grid,
+                              const SearchIndex& search, const DistanceStepOptions& options,
+                              double* seconds = nullptr);
 // Samples per second, triangles tested per sample and the sign method, on stderr.
 void log_distance_report(const DistanceSet& distances, double seconds);
 

@@ -109,10 +109,12 @@ expect_bad_input "tolerance upside down" "--tol: tolerance '1:-1': the lower lim
   "$NCVERIFY" stats good.dist --tol 1:-1
 expect_bad_input "run refuses a bad tolerance before any work" "--tol: tolerance '0,1': unexpected ',1' after the number" \
   runout "$NCVERIFY" run box.stl box.stl -d runout --tol 0,1
-expect_bad_input "colour range that does not parse" "--range: tolerance 'wide'" out15 \
+expect_bad_input "colour range that does not parse" "--range: range 'wide': 'wide' is not a number" out15 \
   "$NCVERIFY" colorize good.dist -o out15 --range wide
 expect_bad_input "colour range of no width" "--range: range '1:1' has no width" out15 \
   "$NCVERIFY" colorize good.dist -o out15 --range 1:1
+expect_bad_input "colour range upside down" "--range: range '1:-1': the lower limit exceeds the upper limit" out15 \
+  "$NCVERIFY" colorize good.dist -o out15 --range 1:-1
 expect_bad_input "histogram range of no width" "--histogram-range: range '0' has no width" "" \
   "$NCVERIFY" stats good.dist --histogram-range 0
 expect_bad_input "negative record count" "--head: '-5' is not a count" out15 \

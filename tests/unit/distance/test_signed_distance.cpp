@@ -14,7 +14,7 @@
 #include "distance/signed_distance.hpp"
 #include "nominal_fixtures.hpp"
 #include "search/grid_builder.hpp"
-#include "search/search_grid.hpp"
+#include "search/search_index.hpp"
 #include "util/error.hpp"
 
 namespace {
@@ -23,10 +23,10 @@ using ncv::SignMethod;
 using ncv::Vec3;
 namespace fx = ncv::fixtures;
 
-ncv::DistanceField distances(const ncv::NominalSurface& nominal, const ncv::UniformGrid* grid,
+ncv::DistanceField distances(const ncv::NominalSurface& nominal, const ncv::BackgroundGrid* grid,
                              const std::vector<Vec3>& points, SignMethod method,
                              ncv::SearchStatistics* stats = nullptr) {
-  std::optional<ncv::SearchGrid> search;
+  std::optional<ncv::SearchIndex> search;
   if (grid) search.emplace(nominal.corners(), *grid);
   return ncv::compute_signed_distances(nominal, search ? &*search : nullptr, points, {}, method,
                                        stats);
@@ -91,7 +91,7 @@ void require_grid_equals_brute_force(const ncv::Mesh& mesh, std::mt19937_64& rng
   for (double factor : {1.0, 0.3, 4.0}) {
     ncv::GridOptions options;
     options.cell_size = base * factor;
-    const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal, options);
+    const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal, options);
     INFO("cell size factor " << factor);
     require_identical(distances(nominal, &grid, points, method), reference);
   }
@@ -173,7 +173,7 @@ TEST_CASE("ties between triangles go to the lowest index", "[distance]") {
   for (std::size_t t = 0; t < half; ++t) mesh.triangles.push_back(mesh.triangles[t]);
   std::reverse(mesh.triangles.begin(), mesh.triangles.end());  // copies first, originals last
   const ncv::NominalSurface nominal(mesh, "doubled");
-  const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal);
+  const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
   std::mt19937_64 rng(12);
   const std::vector<Vec3> points = mixed_points(rng, mesh, 2000);
   const ncv::DistanceField brute = distances(nominal, nullptr, points, SignMethod::winding);
@@ -211,10 +211,11 @@ TEST_CASE("distances and signs around a box are the analytic ones", "[distance]"
                                   return fine.mesh(0.25);
                                 }()}) {
     const ncv::NominalSurface nominal(mesh, "box");
-    const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal);
+    const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
     for (SignMethod method :
          {SignMethod::automatic, SignMethod::pseudonormal, SignMethod::winding}) {
-      for (const ncv::UniformGrid* g : {&grid, static_cast<const ncv::UniformGrid*>(nullptr)}) {
+      for (const ncv::BackgroundGrid* g :
+           {&grid, static_cast<const ncv::BackgroundGrid*>(nullptr)}) {
         const ncv::DistanceField field = distances(nominal, g, points, method);
         for (std::size_t i = 0; i < points.size(); ++i) {
           INFO("point " << i << " method " << ncv::sign_method_name(method));
@@ -236,7 +237,7 @@ TEST_CASE("signs at sharp concave and convex edges and corners of a pocket", "[d
   const std::vector<Vec3> points = points_around(mesh, rng, offset);
   const ncv::NominalSurface nominal(mesh, "pocket");
   REQUIRE(nominal.automatic_sign_method() == SignMethod::pseudonormal);
-  const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal);
+  const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
   for (SignMethod method : {SignMethod::automatic, SignMethod::pseudonormal, SignMethod::winding}) {
     INFO("method " << ncv::sign_method_name(method));
     require_signs(distances(nominal, &grid, points, method), points, solid, scale, offset);
@@ -245,7 +246,7 @@ TEST_CASE("signs at sharp concave and convex edges and corners of a pocket", "[d
     const ncv::NominalSurface inward(fx::flipped(mesh), "inward");
     REQUIRE(inward.flipped());
     REQUIRE(inward.automatic_sign_method() == SignMethod::pseudonormal);
-    const ncv::UniformGrid inward_grid = ncv::build_uniform_grid(inward);
+    const ncv::BackgroundGrid inward_grid = ncv::build_uniform_grid(inward);
     for (SignMethod method : {SignMethod::automatic, SignMethod::winding}) {
       require_signs(distances(inward, &inward_grid, points, method), points, solid, scale, offset);
     }
@@ -266,7 +267,7 @@ TEST_CASE("an open nominal is signed by the winding number", "[distance]") {
   REQUIRE(mesh.triangle_count() == solid.mesh(1.0).triangle_count() - 2);
   const ncv::NominalSurface nominal(mesh, "open");
   CHECK(nominal.automatic_sign_method() == SignMethod::winding);
-  const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal);
+  const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
   std::mt19937_64 rng(31);
   std::vector<Vec3> points;
   for (Vec3 p : points_around(mesh, rng, 0.01)) {
@@ -308,7 +309,7 @@ TEST_CASE("where a pseudonormal vanishes the exact winding number decides", "[di
 TEST_CASE("results do not depend on the thread count", "[distance]") {
   const ncv::Mesh mesh = fx::torus(3, 1, 80, 40);
   const ncv::NominalSurface nominal(mesh, "torus");
-  const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal);
+  const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
   std::mt19937_64 rng(41);
   const std::vector<Vec3> points = mixed_points(rng, mesh, 16000);
   for (SignMethod method : {SignMethod::pseudonormal, SignMethod::winding}) {
@@ -335,8 +336,8 @@ TEST_CASE("a part far from the origin keeps its precision", "[distance]") {
   std::vector<Vec3> points = points_around(mesh, rng, 0.01);
   std::vector<Vec3> shifted = points;
   for (Vec3& p : shifted) p += shift;
-  const ncv::UniformGrid here_grid = ncv::build_uniform_grid(here);
-  const ncv::UniformGrid there_grid = ncv::build_uniform_grid(there);
+  const ncv::BackgroundGrid here_grid = ncv::build_uniform_grid(here);
+  const ncv::BackgroundGrid there_grid = ncv::build_uniform_grid(there);
   const ncv::DistanceField a = distances(here, &here_grid, points, SignMethod::automatic);
   const ncv::DistanceField b = distances(there, &there_grid, shifted, SignMethod::automatic);
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -350,7 +351,7 @@ TEST_CASE("a part far from the origin keeps its precision", "[distance]") {
 TEST_CASE("search statistics count queries, triangles and cells", "[distance]") {
   const ncv::Mesh mesh = fx::torus(3, 1, 40, 20);
   const ncv::NominalSurface nominal(mesh, "torus");
-  const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal);
+  const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
   std::mt19937_64 rng(61);
   std::vector<Vec3> points;
   for (int i = 0; i < 500; ++i) {
@@ -372,8 +373,8 @@ TEST_CASE("search statistics count queries, triangles and cells", "[distance]") 
 
 TEST_CASE("progress is reported from the calling thread, ending at the total", "[distance]") {
   const ncv::NominalSurface nominal(fx::torus(3, 1, 40, 20), "torus");
-  const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal);
-  const ncv::SearchGrid search(nominal.corners(), grid);
+  const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
+  const ncv::SearchIndex search(nominal.corners(), grid);
   std::mt19937_64 rng(71);
   std::vector<Vec3> points;
   for (int i = 0; i < 20000; ++i) points.push_back(fx::random_point(rng, {-5, -5, -2}, {5, 5, 2}));

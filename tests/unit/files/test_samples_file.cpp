@@ -55,7 +55,7 @@ std::string refusal(const fs::path& path) {
 TEST_CASE("a samples file round-trips exactly", "[samples-file]") {
   const ScratchDir dir;
   const SampleSet set = example_set();
-  REQUIRE(set.tri_n[4] == 0);  // the tiny triangle is skipped in scheme II
+  REQUIRE(set.lattice_sizes[4] == 0);  // the tiny triangle is skipped in scheme II
   const SampleSet back = read_samples_file(write_example(dir, set, "round.samples").string());
   CHECK(back.workpiece.vertices == set.workpiece.vertices);
   CHECK(back.workpiece.triangles == set.workpiece.triangles);
@@ -64,8 +64,8 @@ TEST_CASE("a samples file round-trips exactly", "[samples-file]") {
   CHECK(back.step_spec == "0.5");
   CHECK(back.workpiece_source == "example.stl");
   CHECK(back.scheme == SamplingScheme::paper_ii);
-  CHECK(back.tri_n == set.tri_n);
-  CHECK(back.tri_first == set.tri_first);
+  CHECK(back.lattice_sizes == set.lattice_sizes);
+  CHECK(back.first_interior_sample == set.first_interior_sample);
   CHECK(back.vertex_sample == set.vertex_sample);
   CHECK(back.positions == set.positions);
   CHECK(back.owner == set.owner);

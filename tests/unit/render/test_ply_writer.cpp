@@ -181,7 +181,7 @@ TEST_CASE("the lattice PLY shows every sample as a vertex", "[ply]") {
   const SampleSet samples =
       ncv::sample_mesh(ncv::test::flat_grid(2, 1.0), 0.1, ncv::SamplingScheme::all);
   std::uint64_t sub_triangles = 0;
-  for (std::uint32_t n : samples.tri_n) sub_triangles += ncv::lattice_triangle_count(n);
+  for (std::uint32_t n : samples.lattice_sizes) sub_triangles += ncv::lattice_triangle_count(n);
   REQUIRE(samples.sample_count() > 9);
   const auto d = ncv::test::distances_of(samples, [](Vec3 p) { return p[0] - 0.5; });
   const ErrorMesh mesh = ncv::lattice_error_mesh(samples, d);
@@ -239,7 +239,7 @@ TEST_CASE("vertices without a sample are grey with NaN errors", "[ply]") {
   mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1.01, 0.01, 0}};
   mesh.triangles = {{0, 1, 2}, {1, 3, 2}};
   const SampleSet samples = ncv::sample_mesh(mesh, 0.2, ncv::SamplingScheme::paper_ii);
-  REQUIRE(samples.tri_n[1] == 0);
+  REQUIRE(samples.lattice_sizes[1] == 0);
   REQUIRE(samples.vertex_sample[3] == ncv::kNoSample);
   const auto d = ncv::test::distances_of(samples, [](Vec3) { return 0.0; });
 
@@ -261,5 +261,5 @@ TEST_CASE("vertices without a sample are grey with NaN errors", "[ply]") {
   // The unsampled triangle stays in both meshes.
   CHECK(ncv::workpiece_error_mesh(samples, d).mesh.triangle_count() == 2);
   CHECK(ncv::lattice_error_mesh(samples, d).mesh.triangle_count() ==
-        ncv::lattice_triangle_count(samples.tri_n[0]) + 1);
+        ncv::lattice_triangle_count(samples.lattice_sizes[0]) + 1);
 }

@@ -84,7 +84,7 @@ TEST_CASE("sample_at is a bijection onto the samples", "[sampling]") {
   const SampleSet set = sample_mesh(mesh, 0.4, SamplingScheme::all);
   std::vector<int> hits(set.sample_count(), 0);
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-    const std::uint32_t n = set.tri_n[t];
+    const std::uint32_t n = set.lattice_sizes[t];
     REQUIRE(n >= 2);
     for (std::uint32_t i = 0; i < n; ++i) {
       for (std::uint32_t j = 0; i + j < n; ++j) ++hits[set.sample_at(t, i, j)];
@@ -108,7 +108,7 @@ TEST_CASE("mesh vertices are one sample each, computed once", "[sampling]") {
   const Mesh mesh = square(10.0);
   const SampleSet set = sample_mesh(mesh, 100.0, SamplingScheme::all);  // all tiny: n -> 2
   CHECK(set.sample_count() == 4);
-  CHECK(set.tri_n == std::vector<std::uint32_t>{2, 2});
+  CHECK(set.lattice_sizes == std::vector<std::uint32_t>{2, 2});
   std::set<std::tuple<double, double, double>> distinct;
   for (const Vec3& p : set.positions) distinct.insert({p[0], p[1], p[2]});
   CHECK(distinct.size() == 4);
@@ -125,7 +125,7 @@ TEST_CASE("the (n-1)^2 sub-triangles tile every triangle", "[sampling]") {
     double lattice_area = 0, mesh_area = 0;
     for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
       mesh_area += triangle_area(mesh, t);
-      const std::uint32_t n = set.tri_n[t];
+      const std::uint32_t n = set.lattice_sizes[t];
       auto p = [&](std::uint32_t i, std::uint32_t j) {
         return set.positions[set.sample_at(t, i, j)];
       };
@@ -153,8 +153,8 @@ TEST_CASE("scheme II skips exactly the triangles with n < 2", "[sampling]") {
   SamplingReport report_i, report_ii;
   const SampleSet all = sample_mesh(mesh, step, SamplingScheme::all, &report_i);
   const SampleSet skip = sample_mesh(mesh, step, SamplingScheme::paper_ii, &report_ii);
-  CHECK(all.tri_n[1] == 2);
-  CHECK(skip.tri_n[1] == 0);
+  CHECK(all.lattice_sizes[1] == 2);
+  CHECK(skip.lattice_sizes[1] == 0);
   CHECK(all.sample_count() == skip.sample_count() + 3);
   CHECK(skip.vertex_sample[3] == kNoSample);
   CHECK(report_i.small_triangles == 1);
@@ -170,7 +170,7 @@ TEST_CASE("degenerate triangles are counted and sampled at their vertices", "[sa
   SamplingReport report;
   const SampleSet set = sample_mesh(mesh, 0.1, SamplingScheme::all, &report);
   CHECK(report.degenerate_triangles == 1);
-  CHECK(set.tri_n[0] == 2);
+  CHECK(set.lattice_sizes[0] == 2);
   CHECK(set.vertex_sample[2] != kNoSample);
 }
 
@@ -201,11 +201,11 @@ TEST_CASE("a vertex sample belongs to the lowest-index sampled triangle, on any 
   REQUIRE(one.owner == two.owner);
   REQUIRE(one.lattice_i == two.lattice_i);
   REQUIRE(one.lattice_j == two.lattice_j);
-  REQUIRE(std::count(one.tri_n.begin(), one.tri_n.end(), 0u) > 0);
+  REQUIRE(std::count(one.lattice_sizes.begin(), one.lattice_sizes.end(), 0u) > 0);
 
   std::vector<std::uint32_t> lowest(mesh.vertex_count(), kNoSample);
   for (std::size_t t = mesh.triangle_count(); t-- > 0;) {
-    if (one.tri_n[t] == 0) continue;
+    if (one.lattice_sizes[t] == 0) continue;
     for (const std::uint32_t v : mesh.triangles[t]) lowest[v] = static_cast<std::uint32_t>(t);
   }
   for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {

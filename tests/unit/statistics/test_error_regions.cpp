@@ -77,7 +77,7 @@ TEST_CASE("two planted gouges give two gouge regions of the right size", "[regio
 
 TEST_CASE("a region across a triangle edge away from the vertices is one region", "[regions]") {
   const SampleSet samples = ncv::sample_mesh(kite(), 0.0065, ncv::SamplingScheme::all);
-  REQUIRE(samples.tri_n[0] != samples.tri_n[1]);
+  REQUIRE(samples.lattice_sizes[0] != samples.lattice_sizes[1]);
   const Disc disc{{0.5, 0.5, 0}, 0.1, 0.2};
   const auto d = distances_of(samples, [&](Vec3 p) { return dent(disc, p); });
   const std::vector<ErrorRegion> regions = ncv::find_error_regions(samples, d, {-0.01, 0.01});

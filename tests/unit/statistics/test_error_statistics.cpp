@@ -87,7 +87,7 @@ Reference reference_measures(const SampleSet& samples, const std::vector<double>
   Reference ref;
   const ncv::Mesh& mesh = samples.workpiece;
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-    const std::uint32_t n = samples.tri_n[t];
+    const std::uint32_t n = samples.lattice_sizes[t];
     if (n < 2) continue;
     const Vec3 a = mesh.corner(t, 0), b = mesh.corner(t, 1), c = mesh.corner(t, 2);
     const auto point = [&](std::uint32_t i, std::uint32_t j) {
@@ -277,7 +277,7 @@ TEST_CASE("constant offsets per box face give the exact area-weighted measures",
 TEST_CASE("the measures match a plain sub-triangle by sub-triangle recomputation", "[stats]") {
   const SampleSet samples = ncv::sample_mesh(uneven_surface(), 0.03, ncv::SamplingScheme::all);
   std::uint32_t smallest = 1000, largest = 0;
-  for (std::uint32_t n : samples.tri_n) {
+  for (std::uint32_t n : samples.lattice_sizes) {
     smallest = std::min(smallest, n);
     largest = std::max(largest, n);
   }
@@ -481,7 +481,7 @@ TEST_CASE("the mean divides by the whole workpiece area, also under scheme II", 
       {{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {10, 10, 0}, {50, 50, 50}, {51, 50, 50}, {50, 51, 50}},
       {{0, 1, 2}, {3, 2, 1}, {4, 5, 6}}};
   const ncv::SampleSet set = ncv::sample_mesh(mesh, 2.0, ncv::SamplingScheme::paper_ii);
-  REQUIRE(set.tri_n[2] == 0);
+  REQUIRE(set.lattice_sizes[2] == 0);
   const std::vector<double> d(set.sample_count(), 1.0);
   const ncv::ErrorStatistics stats = ncv::compute_error_statistics(set, d, std::nullopt);
   CHECK(stats.workpiece_area == Approx(100.5));

@@ -1,4 +1,4 @@
-#include "search/uniform_grid.hpp"
+#include "search/background_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 namespace ncv {
 namespace {
 
-void check_geometry(const UniformGrid& grid, const std::string& source) {
+void check_geometry(const BackgroundGrid& grid, const std::string& source) {
   if (!is_finite(grid.origin)) throw InputError(source, "grid origin is not finite");
   if (!std::isfinite(grid.cell_size) || !(grid.cell_size > 0)) {
     throw InputError(source,
@@ -24,8 +24,8 @@ void check_geometry(const UniformGrid& grid, const std::string& source) {
   }
 }
 
-void check_offsets(const UniformGrid& grid, const std::string& source) {
-  const std::optional<std::uint64_t> cells = UniformGrid::checked_cell_count(grid.dims);
+void check_offsets(const BackgroundGrid& grid, const std::string& source) {
+  const std::optional<std::uint64_t> cells = BackgroundGrid::checked_cell_count(grid.dims);
   if (!cells || grid.cell_offsets.empty() || grid.cell_offsets.size() - 1 != *cells) {
     throw InputError(
         source, fmt::format("grid has {} cell offsets for {} x {} x {} cells",
@@ -41,7 +41,8 @@ void check_offsets(const UniformGrid& grid, const std::string& source) {
   }
 }
 
-void check_lists(const UniformGrid& grid, std::size_t triangle_count, const std::string& source) {
+void check_lists(const BackgroundGrid& grid, std::size_t triangle_count,
+                 const std::string& source) {
   std::vector<bool> listed(triangle_count, false);
   for (std::size_t c = 0; c + 1 < grid.cell_offsets.size(); ++c) {
     for (std::uint64_t r = grid.cell_offsets[c]; r < grid.cell_offsets[c + 1]; ++r) {
@@ -65,7 +66,7 @@ void check_lists(const UniformGrid& grid, std::size_t triangle_count, const std:
 
 }  // namespace
 
-std::optional<std::uint64_t> UniformGrid::checked_cell_count(
+std::optional<std::uint64_t> BackgroundGrid::checked_cell_count(
     const std::array<std::uint32_t, 3>& dims) {
   std::uint64_t cells = 1;
   for (std::uint32_t d : dims) {
@@ -75,20 +76,20 @@ std::optional<std::uint64_t> UniformGrid::checked_cell_count(
   return cells;
 }
 
-BoundingBox UniformGrid::bounds() const {
+BoundingBox BackgroundGrid::bounds() const {
   BoundingBox box;
   box.min = origin;
   box.max = {cell_bound(0, dims[0]), cell_bound(1, dims[1]), cell_bound(2, dims[2])};
   return box;
 }
 
-void UniformGrid::validate(std::size_t triangle_count, const std::string& source) const {
+void BackgroundGrid::validate(std::size_t triangle_count, const std::string& source) const {
   check_geometry(*this, source);
   check_offsets(*this, source);
   check_lists(*this, triangle_count, source);
 }
 
-void UniformGrid::validate(const NominalSurface& nominal, const std::string& source) const {
+void BackgroundGrid::validate(const NominalSurface& nominal, const std::string& source) const {
   validate(nominal.triangle_count(), source);
   const BoundingBox grid_box = bounds();
   const BoundingBox& part = nominal.local_bounds();

@@ -50,7 +50,7 @@ ncv::NominalSurface nominal_of(ncv::Mesh mesh) {
 
 // Every cell the triangle touches (exact test on the cell's own bounds) lists it, every
 // list is strictly ascending, and nothing is listed in a cell it does not come near.
-void check_lists_complete(const ncv::NominalSurface& nominal, const ncv::UniformGrid& grid) {
+void check_lists_complete(const ncv::NominalSurface& nominal, const ncv::BackgroundGrid& grid) {
   const double h = grid.cell_size;
   const Vec3 half{0.5 * h, 0.5 * h, 0.5 * h};
   const Vec3 grown{0.5 * h * (1 + 1e-6), 0.5 * h * (1 + 1e-6), 0.5 * h * (1 + 1e-6)};
@@ -132,7 +132,7 @@ TEST_CASE("grid lists every triangle in every cell it touches", "[grid]") {
   std::mt19937_64 rng(5);
   SECTION("random soup") {
     const auto nominal = nominal_of(fx::random_soup(rng, 300, 0.2));
-    const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal);
+    const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
     grid.validate(nominal, "built");
     check_lists_complete(nominal, grid);
   }
@@ -142,7 +142,7 @@ TEST_CASE("grid lists every triangle in every cell it touches", "[grid]") {
     ncv::GridOptions options;
     options.cell_size = 0.5;
     ncv::GridStatistics stats;
-    const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal, options, &stats);
+    const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal, options, &stats);
     CHECK(stats.growth_steps == 0);
     CHECK(grid.cell_size == 0.5);
     check_lists_complete(nominal, grid);
@@ -164,7 +164,7 @@ TEST_CASE("grid lists every triangle in every cell it touches", "[grid]") {
 TEST_CASE("grid statistics describe the grid", "[grid]") {
   const auto nominal = nominal_of(fx::torus(2, 0.5, 40, 20));
   ncv::GridStatistics stats;
-  const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal, {}, &stats);
+  const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal, {}, &stats);
   CHECK(stats.dims == grid.dims);
   CHECK(stats.cells == grid.cell_count());
   CHECK(stats.references == grid.cell_triangles.size());
@@ -203,7 +203,7 @@ TEST_CASE("grid memory stays bounded for huge triangles among tiny ones", "[grid
     mesh.triangles.push_back({base, base + 3, base + 4});
     const auto nominal = nominal_of(std::move(mesh));
     ncv::GridStatistics stats;
-    const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal, {}, &stats);
+    const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal, {}, &stats);
     const std::uint64_t t = nominal.triangle_count();
     CHECK(stats.cells <= ncv::kCellsPerTriangle * t);
     CHECK(stats.references <= ncv::kReferencesPerTriangle * t);
@@ -224,7 +224,7 @@ TEST_CASE("grid memory stays bounded for huge triangles among tiny ones", "[grid
     ncv::GridOptions options;
     options.cell_size = 1e-4;  // absurdly small: both bounds must step in
     ncv::GridStatistics stats;
-    const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal, options, &stats);
+    const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal, options, &stats);
     CHECK(stats.cells <= ncv::kMinCellBudget);
     CHECK(stats.references <= ncv::kMinReferenceBudget);
     CHECK(stats.references > ncv::kMinReferenceBudget / 4);  // not grown far beyond need
@@ -239,8 +239,8 @@ TEST_CASE("grid build does not depend on the thread count", "[grid]") {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
     return ncv::build_uniform_grid(nominal);
   };
-  const ncv::UniformGrid one = build_with(1);
-  const ncv::UniformGrid two = build_with(2);
+  const ncv::BackgroundGrid one = build_with(1);
+  const ncv::BackgroundGrid two = build_with(2);
   CHECK(one.origin == two.origin);
   CHECK(one.cell_size == two.cell_size);
   CHECK(one.dims == two.dims);
@@ -254,7 +254,7 @@ TEST_CASE("a cell size far below the part's size grows without overflow", "[grid
     ncv::GridOptions options;
     options.cell_size = tiny;
     ncv::GridStatistics stats;
-    const ncv::UniformGrid grid = ncv::build_uniform_grid(nominal, options, &stats);
+    const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal, options, &stats);
     CHECK(stats.cells <= ncv::kMinCellBudget);
     CHECK(std::isfinite(grid.cell_size));
     grid.validate(nominal, "built");
@@ -273,12 +273,12 @@ TEST_CASE("grid options are checked", "[grid]") {
 TEST_CASE("grid validation rejects every kind of corruption", "[grid]") {
   std::mt19937_64 rng(2);
   const auto nominal = nominal_of(fx::random_soup(rng, 200, 0.2));
-  const ncv::UniformGrid good = ncv::build_uniform_grid(nominal);
+  const ncv::BackgroundGrid good = ncv::build_uniform_grid(nominal);
   REQUIRE_NOTHROW(good.validate(nominal, "grid.bin"));
   REQUIRE(good.cell_triangles.size() > 2);
 
   const auto rejects = [&](auto&& corrupt, const char* what) {
-    ncv::UniformGrid grid = good;
+    ncv::BackgroundGrid grid = good;
     corrupt(grid);
     INFO(what);
     CHECK_THROWS_AS(grid.validate(nominal, "grid.bin"), ncv::InputError);
@@ -288,32 +288,32 @@ TEST_CASE("grid validation rejects every kind of corruption", "[grid]") {
       CHECK(std::string(e.what()).rfind("grid.bin: ", 0) == 0);
     }
   };
-  rejects([](ncv::UniformGrid& g) { g.cell_size = 0; }, "zero cell size");
-  rejects([](ncv::UniformGrid& g) { g.cell_size = std::nan(""); }, "NaN cell size");
-  rejects([](ncv::UniformGrid& g) { g.cell_size = 1e308; }, "grid beyond double range");
-  rejects([](ncv::UniformGrid& g) { g.origin[1] = std::numeric_limits<double>::infinity(); },
+  rejects([](ncv::BackgroundGrid& g) { g.cell_size = 0; }, "zero cell size");
+  rejects([](ncv::BackgroundGrid& g) { g.cell_size = std::nan(""); }, "NaN cell size");
+  rejects([](ncv::BackgroundGrid& g) { g.cell_size = 1e308; }, "grid beyond double range");
+  rejects([](ncv::BackgroundGrid& g) { g.origin[1] = std::numeric_limits<double>::infinity(); },
           "infinite origin");
-  rejects([](ncv::UniformGrid& g) { g.dims[1] = 0; }, "zero dimension");
+  rejects([](ncv::BackgroundGrid& g) { g.dims[1] = 0; }, "zero dimension");
   rejects(
-      [](ncv::UniformGrid& g) {
+      [](ncv::BackgroundGrid& g) {
         g.dims = {4000000000u, 4000000000u, 4000000000u};
       },
       "dimension product overflows");
-  rejects([](ncv::UniformGrid& g) { ++g.dims[0]; }, "dims do not match offsets");
-  rejects([](ncv::UniformGrid& g) { g.cell_offsets.pop_back(); }, "offsets too short");
-  rejects([](ncv::UniformGrid& g) { g.cell_offsets.clear(); }, "no offsets");
-  rejects([](ncv::UniformGrid& g) { g.cell_offsets[0] = 1; }, "offsets not from zero");
-  rejects([](ncv::UniformGrid& g) { g.cell_triangles.pop_back(); }, "offsets past the lists");
+  rejects([](ncv::BackgroundGrid& g) { ++g.dims[0]; }, "dims do not match offsets");
+  rejects([](ncv::BackgroundGrid& g) { g.cell_offsets.pop_back(); }, "offsets too short");
+  rejects([](ncv::BackgroundGrid& g) { g.cell_offsets.clear(); }, "no offsets");
+  rejects([](ncv::BackgroundGrid& g) { g.cell_offsets[0] = 1; }, "offsets not from zero");
+  rejects([](ncv::BackgroundGrid& g) { g.cell_triangles.pop_back(); }, "offsets past the lists");
   rejects(
-      [](ncv::UniformGrid& g) {
+      [](ncv::BackgroundGrid& g) {
         const auto c = std::find_if(g.cell_offsets.begin() + 1, g.cell_offsets.end(),
                                     [](std::uint64_t o) { return o > 0; });
         *(c - 1) = *c + 1;
       },
       "decreasing offsets");
-  rejects([&](ncv::UniformGrid& g) { g.cell_triangles[0] = 200; }, "triangle out of range");
+  rejects([&](ncv::BackgroundGrid& g) { g.cell_triangles[0] = 200; }, "triangle out of range");
   rejects(
-      [](ncv::UniformGrid& g) {
+      [](ncv::BackgroundGrid& g) {
         for (std::size_t c = 0; c + 1 < g.cell_offsets.size(); ++c) {
           if (g.cell_offsets[c + 1] - g.cell_offsets[c] >= 2) {
             std::swap(g.cell_triangles[g.cell_offsets[c]], g.cell_triangles[g.cell_offsets[c] + 1]);
@@ -322,11 +322,11 @@ TEST_CASE("grid validation rejects every kind of corruption", "[grid]") {
         }
       },
       "unsorted list");
-  rejects([](ncv::UniformGrid& g) { g.origin[0] += 0.5; }, "does not cover the nominal");
+  rejects([](ncv::BackgroundGrid& g) { g.origin[0] += 0.5; }, "does not cover the nominal");
   rejects(
-      [](ncv::UniformGrid& g) {
+      [](ncv::BackgroundGrid& g) {
         // Drop triangle 0 from every list it is in.
-        ncv::UniformGrid pruned = g;
+        ncv::BackgroundGrid pruned = g;
         pruned.cell_triangles.clear();
         for (std::size_t c = 0; c + 1 < g.cell_offsets.size(); ++c) {
           pruned.cell_offsets[c] = pruned.cell_triangles.size();

@@ -11,26 +11,26 @@
 #include <span>
 
 #include "geometry/closest_point.hpp"
+#include "search/background_grid.hpp"
 #include "search/reference_boxes.hpp"
-#include "search/uniform_grid.hpp"
 #include "util/buffer.hpp"
 
 namespace ncv {
 
-class SearchGrid {
+class SearchIndex {
  public:
   // `grid` must have been built for (or validated against) `triangles`; both must outlive
   // this.
-  SearchGrid(std::span<const TriangleCorners> triangles, const UniformGrid& grid)
+  SearchIndex(std::span<const TriangleCorners> triangles, const BackgroundGrid& grid)
       : triangles_(triangles), grid_(&grid), boxes_(build_reference_boxes(triangles, grid)) {}
 
   std::span<const TriangleCorners> triangles() const { return triangles_; }
-  const UniformGrid& grid() const { return *grid_; }
+  const BackgroundGrid& grid() const { return *grid_; }
   std::span<const BoxBlock> boxes() const { return boxes_; }
 
  private:
   std::span<const TriangleCorners> triangles_;
-  const UniformGrid* grid_;
+  const BackgroundGrid* grid_;
   Buffer<BoxBlock> boxes_;
 };
 

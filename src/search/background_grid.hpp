@@ -3,8 +3,8 @@
 //
 // Frame: the grid lives in the nominal's local frame (NominalSurface::origin() is its zero).
 // Cell (i, j, k) spans origin + [i, i+1] x [j, j+1] x [k, k+1] * cell_size; every bound is
-// computed as cell_bound(axis, i) = origin[axis] + i * cell_size, the same expression in
-// the builder and the search, so both agree on each bound to the last bit. Cells are
+// computed by cell_bound(origin[axis], cell_size, i) = origin[axis] + i * cell_size, in the
+// builder and the search alike, so both agree on each bound to the last bit. Cells are
 // numbered x fastest: (k * dims[1] + j) * dims[0] + i. Cell c lists the triangles
 // cell_triangles[cell_offsets[c] .. cell_offsets[c + 1]) that touch it, ascending.
 #pragma once
@@ -20,7 +20,14 @@
 
 namespace ncv {
 
-struct UniformGrid {
+// Coordinate of the lower face of cell index i along an axis whose cells start at `origin`:
+// the one expression the builder, the grid and the search all compute bounds with, so they
+// agree on each bound to the last bit.
+inline double cell_bound(double origin, double cell_size, std::int64_t i) {
+  return origin + static_cast<double>(i) * cell_size;
+}
+
+struct BackgroundGrid {
   Vec3 origin{0, 0, 0};
   double cell_size = 0;
   std::array<std::uint32_t, 3> dims{0, 0, 0};
@@ -38,7 +45,7 @@ struct UniformGrid {
     return (std::uint64_t{k} * dims[1] + j) * dims[0] + i;
   }
   double cell_bound(int axis, std::int64_t i) const {
-    return origin[axis] + static_cast<double>(i) * cell_size;
+    return ncv::cell_bound(origin[axis], cell_size, i);
   }
   BoundingBox bounds() const;
 

@@ -1,0 +1,19 @@
+#include "statistics/value_range.hpp"
+
+#include <fmt/format.h>
+
+#include "statistics/limits_text.hpp"
+#include "util/error.hpp"
+
+namespace ncv {
+
+ValueRange parse_value_range(std::string_view text) {
+  const auto [lo, hi] = parse_limits(text, "range");
+  if (!(lo < hi)) {
+    throw UsageError(fmt::format(
+        "range '{}' has no width: its lower limit must be below its upper limit", text));
+  }
+  return {lo, hi};
+}
+
+}  // namespace ncv
