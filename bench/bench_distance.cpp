@@ -16,8 +16,9 @@
 
 #include "distance/signed_distance.hpp"
 #include "mesh/mesh_reader.hpp"
-#include "nominal/winding_number.hpp"
+#include "reference/winding_number.hpp"
 #include "search/grid_builder.hpp"
+#include "search/indexed_reference.hpp"
 #include "search/search_index.hpp"
 #include "workload.hpp"
 
@@ -48,9 +49,9 @@ ncv::Mesh torus() {
 }
 
 struct Scene {
-  ncv::NominalSurface nominal{torus(), "torus"};
-  ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
-  ncv::SearchIndex search{nominal.corners(), grid};
+  ncv::IndexedReference reference = ncv::index_reference(torus(), "torus");
+  const ncv::ReferenceSurface& nominal = *reference.surface;
+  ncv::SearchIndex search{reference};
   std::vector<Vec3> points;
   std::vector<Vec3> shuffled;
 
@@ -89,8 +90,9 @@ void run_distances(benchmark::State& state, bool use_grid, const std::vector<Vec
   const std::span<const Vec3> points(all.data(), count);
   ncv::SearchStatistics stats;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(ncv::compute_signed_distances(
-        s.nominal, use_grid ? &s.search : nullptr, points, {}, method, &stats));
+    benchmark::DoNotOptimize(
+        use_grid ? ncv::compute_signed_distances(s.search, points, {}, method, &stats)
+                 : ncv::compute_signed_distances(s.nominal, points, {}, method, &stats));
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * count));
   state.counters["triangles/query"] = stats.triangles_per_query();
@@ -117,7 +119,7 @@ void BM_BruteForce(benchmark::State& state) {
 void BM_GridBuild(benchmark::State& state) {
   const Scene& s = scene();
   ncv::GridStatistics stats;
-  for (auto _ : state) benchmark::DoNotOptimize(ncv::build_uniform_grid(s.nominal, {}, &stats));
+  for (auto _ : state) benchmark::DoNotOptimize(ncv::build_background_grid(s.nominal, {}, &stats));
   state.counters["cells"] = static_cast<double>(stats.cells);
   state.counters["references/triangle"] = stats.references_per_triangle;
 }
@@ -149,10 +151,10 @@ void BM_WorkloadGrid(benchmark::State& state) {
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
                               static_cast<std::size_t>(state.range(0)));
   // Built once, as `run` builds it in its grid-build phase.
-  static const ncv::SearchIndex search(w->nominal->corners(), w->grid);
+  static const ncv::SearchIndex search(w->nominal);
   ncv::SearchStatistics stats;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(ncv::compute_signed_distances(*w->nominal, &search, w->points, {},
+    benchmark::DoNotOptimize(ncv::compute_signed_distances(search, w->points, {},
                                                            ncv::SignMethod::pseudonormal, &stats));
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * w->points.size()));
@@ -163,7 +165,7 @@ void BM_WorkloadGrid(benchmark::State& state) {
       static_cast<double>(stats.cells_visited) / static_cast<double>(stats.queries);
 }
 
-// build_uniform_grid alone (no reading, welding, topology or writing) on the nominal named
+// build_background_grid alone (no reading, welding, topology or writing) on the nominal named
 // by NCV_BENCH_GRID_NOMINAL_<arg> (scripts/bench.sh: 0 to 3 for 17 k, 170 k, 1 M, 1.7 M).
 void BM_WorkloadGridBuild(benchmark::State& state) {
   const std::string name = "NCV_BENCH_GRID_NOMINAL_" + std::to_string(state.range(0));
@@ -172,9 +174,9 @@ void BM_WorkloadGridBuild(benchmark::State& state) {
     state.SkipWithError((name + " not set").c_str());
     return;
   }
-  const ncv::NominalSurface nominal(ncv::read_mesh(path), path);
+  const ncv::ReferenceSurface nominal(ncv::read_mesh(path), path);
   ncv::GridStatistics stats;
-  for (auto _ : state) benchmark::DoNotOptimize(ncv::build_uniform_grid(nominal, {}, &stats));
+  for (auto _ : state) benchmark::DoNotOptimize(ncv::build_background_grid(nominal, {}, &stats));
   state.counters["triangles"] = static_cast<double>(nominal.triangle_count());
   state.counters["bytes/triangle"] =
       static_cast<double>(stats.bytes) / static_cast<double>(nominal.triangle_count());

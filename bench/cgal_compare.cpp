@@ -59,10 +59,10 @@ std::size_t differing(const std::vector<double>& a, const std::vector<double>& b
 
 int main(int argc, char** argv) {
   ncv::bench::Workload w = ncv::bench::load_local_workload(argc, argv);
-  const ncv::NominalSurface& nominal = *w.nominal;
+  const ncv::ReferenceSurface& nominal = *w.nominal.surface;
   const std::vector<ncv::Vec3>& points = w.points;
-  const double scale =
-      std::max(ncv::max_abs(w.grid.bounds().min), ncv::max_abs(w.grid.bounds().max));
+  const double scale = std::max(ncv::max_abs(w.nominal.grid.bounds().min),
+                                ncv::max_abs(w.nominal.grid.bounds().max));
 
   std::vector<Triangle> triangles;
   triangles.reserve(nominal.triangle_count());
@@ -75,7 +75,7 @@ int main(int argc, char** argv) {
   tree.accelerate_distance_queries();
   const double build_seconds = build_clock.seconds();
 
-  const ncv::SearchIndex index(nominal.corners(), w.grid);
+  const ncv::SearchIndex index(w.nominal);
   ncv::GridSearcher search(index);
   std::vector<double> grid_squared(points.size()), default_squared(points.size()),
       hinted_squared(points.size());

@@ -134,16 +134,16 @@ double whole_pass(ncv::GridSearcher& search, const std::vector<ncv::Vec3>& point
 
 int main(int argc, char** argv) {
   ncv::bench::Workload w = ncv::bench::load_local_workload(argc, argv);
-  const ncv::NominalSurface& nominal = *w.nominal;
+  const ncv::ReferenceSurface& nominal = *w.nominal.surface;
   const std::vector<ncv::Vec3>& points = w.points;
 
-  const ncv::SearchIndex index(nominal.corners(), w.grid);
+  const ncv::SearchIndex index(w.nominal);
   ncv::GridSearcher search(index);
   std::vector<std::uint32_t> answers(points.size());
   const Profile searched = profile(search, points, answers, false);
   const Profile hinted = profile(search, points, answers, true);
   std::printf("%zu samples, %zu nominal triangles, cell %.3f\n", points.size(),
-              nominal.triangle_count(), w.grid.cell_size);
+              nominal.triangle_count(), w.nominal.grid.cell_size);
   print("distance class", searched.by_distance, points.size());
   print("surface, hint", searched.by_hint, points.size());
   std::printf("the same with each sample's closest triangle as the hint:\n");

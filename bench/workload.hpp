@@ -15,21 +15,19 @@
 #include "mesh/mesh_reader.hpp"
 #include "sampling/sampling.hpp"
 #include "search/closest_point_search.hpp"
-#include "search/grid_builder.hpp"
+#include "search/indexed_reference.hpp"
 
 namespace ncv::bench {
 
 struct Workload {
-  std::unique_ptr<NominalSurface> nominal;
-  BackgroundGrid grid;
+  IndexedReference nominal;
   std::vector<Vec3> points;  // the samples, global frame (load_workload) or local
 };
 
 inline Workload load_workload(const char* workpiece_path, const char* nominal_path,
                               double step_fraction = 0.001) {
   Workload w;
-  w.nominal = std::make_unique<NominalSurface>(read_mesh(nominal_path), nominal_path);
-  w.grid = build_uniform_grid(*w.nominal);
+  w.nominal = index_reference(read_mesh(nominal_path), nominal_path);
   Mesh workpiece = read_mesh(workpiece_path);
   const double step = step_fraction * bounding_box(workpiece).diagonal();
   w.points = sample_mesh(std::move(workpiece), step, SamplingScheme::all).positions;
@@ -46,7 +44,7 @@ inline Workload load_local_workload(int argc, char** argv) {
   }
   try {
     Workload w = load_workload(argv[1], argv[2], argc > 3 ? std::atof(argv[3]) : 0.001);
-    for (Vec3& p : w.points) p = w.nominal->to_local(p);
+    for (Vec3& p : w.points) p = w.nominal.surface->to_local(p);
     return w;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: %s\n", argv[0], e.what());

@@ -1,41 +1,25 @@
-// ncverify colorize DIST -o OUT.ply: the workpiece painted by its error, for MeshLab and
-// CloudCompare, with an optional SVG legend.
-#include <spdlog/spdlog.h>
-
-#include "colorize_options.hpp"
-#include "command_options.hpp"
+// ncverify colorize DIST -o OUT.ply: the sampled surface painted by its error, for MeshLab
+// and CloudCompare, with an optional SVG legend.
 #include "commands.hpp"
-#include "files/distance_file.hpp"
-#include "option_checks.hpp"
+#include "option_groups.hpp"
+#include "options.hpp"
 
 namespace ncv::cmd {
-namespace {
-
-struct ColorizeCommandOptions {
-  std::string distances;
-  std::string output;
-  ColorizeOptions colorize;
-};
-
-void run_colorize(const ColorizeCommandOptions& options) {
-  const DistanceSet distances = read_distance_file(options.distances);
-  write_colorized(distances, default_output(options.output, options.distances, ".ply"),
-                  options.colorize);
-}
-
-}  // namespace
 
 void add_colorize_command(CLI::App& app, CommandContext&) {
-  auto options = std::make_shared<ColorizeCommandOptions>();
+  auto job = std::make_shared<ColorizeJob>();
   CLI::App* sub = app.add_subcommand("colorize", "Write the workpiece as a coloured PLY");
-  sub->add_option("distances", options->distances, "Distance file from `distance` (- = stdin)")
+  sub->add_option("distances", job->distances, "Distance file from `distance` (- = stdin)")
       ->required();
-  add_output_option(*sub, options->output, "PLY file (default: DIST stem + .ply)");
-  add_colorize_options(*sub, options->colorize);
-  sub->add_option("-t,--tol", options->colorize.tolerance,
-                  "Tolerance zone LOWER:UPPER or T (selects the tolerance colour map)")
-      ->check(valid_zone());
-  sub->callback([options] { run_colorize(*options); });
+  add_output_option(*sub, job->output, "PLY file (default: DIST stem + .ply)");
+  add_colorize_options(*sub, job->options);
+  sub->add_option("--legend", job->legend_svg, "Also write the colour bar as SVG");
+  add_tolerance_option(*sub, job->options.tolerance,
+                       "Tolerance zone LOWER:UPPER or T (selects the tolerance colour map)");
+  sub->callback([job] {
+    job->output = default_output(job->output, job->distances, ".ply");
+    run_colorize(*job);
+  });
 }
 
 }  // namespace ncv::cmd

@@ -1,151 +1,33 @@
 // ncverify inspect FILE: the header and records of any ncverify file, as text, JSON or CSV.
-#include <fmt/format.h>
-
-#include <cstring>
-#include <iostream>
+#include <charconv>
 
 #include "commands.hpp"
-#include "files/container.hpp"
-#include "option_checks.hpp"
-#include "util/error.hpp"
-#include "util/input_bytes.hpp"
-#include "util/output_file.hpp"
+#include "options.hpp"
+#include "runners/inspect_runner.hpp"
 
 namespace ncv::cmd {
 namespace {
 
-struct InspectOptions {
-  std::string file;
-  std::string output = "-";
-  bool json = false;
-  bool csv = false;
-  std::int64_t head = -1;
-};
-
-// One column of the record table: a section, or one component of an N×3 section.
-struct Column {
-  std::string name;
-  Container::RawSection section;
-  std::uint64_t width;      // values per record
-  std::uint64_t component;  // which of them
-};
-
-std::string format_value(const Container::RawSection& s, std::uint64_t index) {
-  const char* at = s.data + index * (s.dtype == "<u4" ? 4 : 8);
-  if (s.dtype == "<f8") {
-    double v;
-    std::memcpy(&v, at, 8);
-    return fmt::format("{}", v);
+std::int64_t parse_count(const std::string& text) {
+  std::int64_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size() || value < 0) {
+    throw UsageError("'" + text + "' is not a count (a whole number, 0 or more)");
   }
-  if (s.dtype == "<u8") {
-    std::uint64_t v;
-    std::memcpy(&v, at, 8);
-    return fmt::format("{}", v);
-  }
-  std::uint32_t v;
-  std::memcpy(&v, at, 4);
-  return fmt::format("{}", v);
-}
-
-std::vector<Column> record_columns(const Container& c, std::uint64_t records) {
-  std::vector<Column> columns;
-  if (!c.meta().contains("records")) {
-    throw UsageError(fmt::format("a {} has no per-record table; see its header (--json)",
-                                 kind_description(c.kind())));
-  }
-  const nlohmann::json& names = c.field("/records/sections");
-  if (!names.is_array()) c.fail("record table is malformed");
-  for (const auto& name : names) {
-    if (!name.is_string()) c.fail("record table is malformed");
-    const auto section = c.raw_section(name.get<std::string>());
-    const std::uint64_t width = section.columns;
-    if (section.elements / width != records) c.fail("record section size mismatch");
-    for (std::uint64_t k = 0; k < width; ++k) {
-      const std::string suffix = width == 1   ? std::string()
-                                 : width == 3 ? fmt::format("_{}", "xyz"[k])
-                                              : fmt::format("_{}", k);
-      columns.push_back({name.get<std::string>() + suffix, section, width, k});
-    }
-  }
-  return columns;
-}
-
-void write_records(const Container& c, const InspectOptions& options, OutputFile& out) {
-  const std::vector<Column> columns =
-      record_columns(c, c.meta().contains("records") ? c.count("/records/count") : 0);
-  const std::uint64_t records = c.count("/records/count");
-  const std::uint64_t shown =
-      options.head >= 0 ? std::min<std::uint64_t>(records, options.head) : records;
-  const char separator = options.csv ? ',' : '\t';
-  fmt::memory_buffer line;
-  fmt::format_to(std::back_inserter(line), "index");
-  for (const Column& column : columns) {
-    fmt::format_to(std::back_inserter(line), "{}{}", separator, column.name);
-  }
-  line.push_back('\n');
-  for (std::uint64_t r = 0; r < shown; ++r) {
-    fmt::format_to(std::back_inserter(line), "{}", r);
-    for (const Column& column : columns) {
-      fmt::format_to(std::back_inserter(line), "{}{}", separator,
-                     format_value(column.section, r * column.width + column.component));
-    }
-    line.push_back('\n');
-    if (line.size() > (1u << 20)) {
-      out.write(line.data(), line.size());
-      line.clear();
-    }
-  }
-  out.write(line.data(), line.size());
-}
-
-void write_header_text(const Container& c, const std::string& name, OutputFile& out) {
-  out.write(fmt::format("file:    {} ({} bytes)\n", name, c.file_bytes()));
-  out.write(fmt::format("kind:    {} ({}), format version {}\n", kind_tag(c.kind()),
-                        kind_description(c.kind()), c.version()));
-  nlohmann::json meta = c.meta();
-  const nlohmann::json sections = meta["sections"];
-  meta.erase("sections");
-  for (const auto& [key, value] : meta.items()) {
-    out.write(fmt::format("{}: {}\n", key, value.dump()));
-  }
-  out.write("sections:\n");
-  for (const auto& s : sections) {
-    out.write(fmt::format("  {:<20} {} shape {} at offset {} ({} bytes)\n",
-                          s["name"].get<std::string>(), s["dtype"].get<std::string>(),
-                          s["shape"].dump(), s["offset"].dump(), s["bytes"].dump()));
-  }
-}
-
-void run_inspect(const InspectOptions& options) {
-  const Container c = Container::read_any(options.file);
-  OutputFile out(options.output, OutputKind::text);
-  if (options.json) {
-    const nlohmann::json header = {{"file", input_name(options.file)},
-                                   {"bytes", c.file_bytes()},
-                                   {"kind", kind_tag(c.kind())},
-                                   {"format_version", c.version()},
-                                   {"meta", c.meta()}};
-    out.write(header.dump(2) + "\n");
-  } else if (options.csv) {
-    write_records(c, options, out);
-  } else {
-    write_header_text(c, input_name(options.file), out);
-    if (options.head >= 0 && c.meta().contains("records")) write_records(c, options, out);
-  }
-  out.commit();
+  return value;
 }
 
 }  // namespace
 
 void add_inspect_command(CLI::App& app, CommandContext&) {
-  auto options = std::make_shared<InspectOptions>();
+  auto job = std::make_shared<InspectJob>();
   CLI::App* sub = app.add_subcommand("inspect", "Show an ncverify file's header and records");
-  sub->add_option("file", options->file, "Samples, grid or distance file (- = stdin)")->required();
-  auto* json = sub->add_flag("--json", options->json, "Header and metadata as JSON");
-  sub->add_flag("--csv", options->csv, "Records as CSV (one row per record)")->excludes(json);
-  sub->add_option("--head", options->head, "Only the first N records")->check(valid_count());
-  sub->add_option("-o,--output", options->output, "Where to write (default: standard output)");
-  sub->callback([options] { run_inspect(*options); });
+  sub->add_option("file", job->file, "Samples, grid or distance file (- = stdin)")->required();
+  auto* json = sub->add_flag("--json", job->json, "Header and metadata as JSON");
+  sub->add_flag("--csv", job->csv, "Records as CSV (one row per record)")->excludes(json);
+  add_parsed_option(*sub, "--head", job->head, parse_count, "Only the first N records");
+  sub->add_option("-o,--output", job->output, "Where to write (default: standard output)");
+  sub->callback([job] { run_inspect(*job); });
 }
 
 }  // namespace ncv::cmd

@@ -1,4 +1,4 @@
-// Grid files (kind GRID) as `distance` reads them: Container::parse, load_nominal_grid
+// Grid files (kind GRID) as `distance` reads them: Container::parse, load_indexed_reference
 // (mesh, hash, topology, grid validation), then what `distance` does with an accepted
 // grid: signed distances of points on, around and inside the nominal by the grid search,
 // which must neither crash nor hang whatever cell lists the file holds. (Its results are
@@ -33,10 +33,10 @@ std::vector<ncv::Vec3> query_points(const ncv::Mesh& mesh) {
 void read_grid(ncv::Buffer<char> bytes) {
   const ncv::Container c = ncv::Container::parse(std::move(bytes), "fuzz.grid", ncv::FileKind::grid,
                                                  ncv::kGridFormatVersion);
-  const ncv::PreparedNominal g = ncv::load_nominal_grid(c);
+  const ncv::IndexedReference g = ncv::load_indexed_reference(c);
   const std::vector<ncv::Vec3> points = query_points(g.mesh);
   const ncv::SignMethod sign = g.nominal->automatic_sign_method();
-  const ncv::SearchIndex search(g.nominal->corners(), g.grid);
+  const ncv::SearchIndex search(g);
   const ncv::DistanceField field =
       ncv::compute_signed_distances(*g.nominal, &search, points, {}, sign);
   for (std::size_t i = 0; i < points.size(); ++i) {

@@ -40,9 +40,9 @@ void verify(const ncv::Mesh& workpiece) {
   if (ncv::predicted_sample_count(workpiece, plan) > kMaxSamples) return;
   const ncv::SampleSet samples = ncv::sample_mesh(workpiece, std::move(plan));
 
-  const ncv::PreparedNominal g = ncv::build_nominal_grid(workpiece, "fuzz", {}, nullptr);
+  const ncv::IndexedReference g = ncv::index_reference(workpiece, "fuzz", {}, nullptr);
   const ncv::SignMethod sign = g.nominal->automatic_sign_method();
-  const ncv::SearchIndex search(g.nominal->corners(), g.grid);
+  const ncv::SearchIndex search(g);
   const ncv::DistanceField by_grid =
       ncv::compute_signed_distances(*g.nominal, &search, samples.positions, {}, sign);
   const ncv::DistanceField by_brute_force =

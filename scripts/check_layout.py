@@ -7,8 +7,8 @@ import re
 import sys
 
 # Pipeline order, lowest first: the same list as docs/ARCHITECTURE.md.
-STAGES = ["util", "geometry", "mesh", "sampling", "nominal", "search", "distance", "files",
-          "statistics", "render", "steps"]
+STAGES = ["util", "geometry", "mesh", "sampling", "reference", "search", "distance", "files",
+          "statistics", "render", "runners"]
 INCLUDE = re.compile(r'^#include "([a-z_]+)/([a-z_0-9]+\.hpp)"', re.M)
 
 

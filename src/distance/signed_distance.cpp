@@ -12,7 +12,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
-#include "nominal/winding_number.hpp"
+#include "reference/winding_number.hpp"
 #include "search/closest_point_search.hpp"
 #include "util/error.hpp"
 
@@ -55,7 +55,7 @@ struct Worker {
 
 class SignedDistanceJob {
  public:
-  SignedDistanceJob(const NominalSurface& nominal, const SearchIndex* grid,
+  SignedDistanceJob(const ReferenceSurface& nominal, const SearchIndex* grid,
                     std::span<const Vec3> points, std::span<const Vec3> normals, SignMethod method)
       : nominal_(nominal), grid_(grid), points_(points), normals_(normals), method_(method) {
     if (method_ == SignMethod::winding)
@@ -115,7 +115,7 @@ class SignedDistanceJob {
     }
   }
 
-  const NominalSurface& nominal_;
+  const ReferenceSurface& nominal_;
   const SearchIndex* grid_;
   std::span<const Vec3> points_;
   std::span<const Vec3> normals_;
@@ -126,15 +126,16 @@ class SignedDistanceJob {
 
 }  // namespace
 
-SignMethod resolve_sign_method(const NominalSurface& nominal, SignMethod requested) {
+SignMethod resolve_sign_method(const ReferenceSurface& nominal, SignMethod requested) {
   return requested == SignMethod::automatic ? nominal.automatic_sign_method() : requested;
 }
 
-DistanceField compute_signed_distances(const NominalSurface& nominal, const SearchIndex* grid,
-                                       std::span<const Vec3> points,
-                                       std::span<const Vec3> sample_normals, SignMethod method,
-                                       SearchStatistics* statistics,
-                                       const DistanceProgress& progress) {
+namespace {
+
+DistanceField measure(const ReferenceSurface& nominal, const SearchIndex* grid,
+                      std::span<const Vec3> points, std::span<const Vec3> sample_normals,
+                      SignMethod method, SearchStatistics* statistics,
+                      const DistanceProgress& progress) {
   check_inputs(points, sample_normals, method);
   const std::size_t n = points.size();
   DistanceField field;
@@ -165,6 +166,23 @@ DistanceField compute_signed_distances(const NominalSurface& nominal, const Sear
     statistics->cells_visited = counters.cells_visited;
   }
   return field;
+}
+
+}  // namespace
+
+DistanceField compute_signed_distances(const SearchIndex& index, std::span<const Vec3> points,
+                                       std::span<const Vec3> sample_normals, SignMethod method,
+                                       SearchStatistics* statistics,
+                                       const DistanceProgress& progress) {
+  return measure(index.surface(), &index, points, sample_normals, method, statistics, progress);
+}
+
+DistanceField compute_signed_distances(const ReferenceSurface& surface,
+                                       std::span<const Vec3> points,
+                                       std::span<const Vec3> sample_normals, SignMethod method,
+                                       SearchStatistics* statistics,
+                                       const DistanceProgress& progress) {
+  return measure(surface, nullptr, points, sample_normals, method, statistics, progress);
 }
 
 }  // namespace ncv

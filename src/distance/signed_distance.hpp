@@ -16,7 +16,7 @@
 //   winding       inside when the generalized winding number w(p) >= 0.5, evaluated with
 //                 the fast hierarchy (WindingNumberTree, built once per call).
 //   paper         the sample's own normal N_p: positive when N_p . (p - c) > 0.
-//   automatic     the nominal's choice (NominalSurface::automatic_sign_method).
+//   automatic     the nominal's choice (ReferenceSurface::automatic_sign_method).
 //
 // Parallel over fixed blocks of points with oneTBB. Every value of a point is computed on its own
 // and the statistics are integer sums, so the output does not depend on the thread count.
@@ -27,8 +27,8 @@
 #include <span>
 #include <vector>
 
-#include "nominal/nominal_surface.hpp"
-#include "nominal/sign_method.hpp"
+#include "reference/reference_surface.hpp"
+#include "reference/sign_method.hpp"
 #include "search/search_index.hpp"
 #include "util/buffer.hpp"
 
@@ -61,13 +61,19 @@ using DistanceProgress = std::function<void(std::size_t done, std::size_t total)
 
 // The method `requested` stands for on this nominal: automatic resolves to the nominal's
 // choice, the others to themselves.
-SignMethod resolve_sign_method(const NominalSurface& nominal, SignMethod requested);
+SignMethod resolve_sign_method(const ReferenceSurface& nominal, SignMethod requested);
 
 // `points` in the global frame, each finite and within kMaxCoordinate (InputError
 // otherwise, naming "query points"). `sample_normals` is read only by SignMethod::paper
-// and must then hold one normal per point (UsageError otherwise). `grid` must have been
-// made from this nominal's corners; nullptr searches by brute force.
-DistanceField compute_signed_distances(const NominalSurface& nominal, const SearchIndex* grid,
+// and must then hold one normal per point (UsageError otherwise).
+//
+// Over the background grid of the index's reference:
+DistanceField compute_signed_distances(const SearchIndex& index, std::span<const Vec3> points,
+                                       std::span<const Vec3> sample_normals, SignMethod method,
+                                       SearchStatistics* statistics = nullptr,
+                                       const DistanceProgress& progress = {});
+// By brute force, every triangle of the surface for every point (the reference result):
+DistanceField compute_signed_distances(const ReferenceSurface& surface,
                                        std::span<const Vec3> points,
                                        std::span<const Vec3> sample_normals, SignMethod method,
                                        SearchStatistics* statistics = nullptr,

@@ -37,10 +37,10 @@ std::string string_field(const Container& c, const std::string& pointer) {
 
 nlohmann::json distance_meta(const DistanceSet& set) {
   nlohmann::json meta = sample_set_meta(set.samples);
-  nlohmann::json nominal = {{"source", set.nominal.source},
-                            {"hash", hash_hex(set.nominal.hash)},
-                            {"triangles", set.nominal.triangles}};
-  nominal.update(box_json(set.nominal.box));
+  nlohmann::json nominal = {{"source", set.reference.source},
+                            {"hash", hash_hex(set.reference.hash)},
+                            {"triangles", set.reference.triangles}};
+  nominal.update(box_json(set.reference.box));
   meta["nominal"] = nominal;
   meta["distance"] = {{"sign_method", set.sign_method},
                       {"search", set.search},
@@ -70,10 +70,10 @@ DistanceSet load_distance_set(const Container& c) {
   DistanceSet set;
   set.samples = load_sample_set(c);
   const std::uint64_t S = set.samples.sample_count();
-  set.nominal.source = string_field(c, "/nominal/source");
-  set.nominal.hash = parse_hash_hex(string_field(c, "/nominal/hash"), c);
-  set.nominal.triangles = c.count("/nominal/triangles");
-  set.nominal.box = box_from(c, "/nominal");
+  set.reference.source = string_field(c, "/nominal/source");
+  set.reference.hash = parse_hash_hex(string_field(c, "/nominal/hash"), c);
+  set.reference.triangles = c.count("/nominal/triangles");
+  set.reference.box = box_from(c, "/nominal");
   set.sign_method = string_field(c, "/distance/sign_method");
   set.search = string_field(c, "/distance/search");
   if (!c.field("/distance/triangles_tested_per_sample").is_number()) {
@@ -88,7 +88,7 @@ DistanceSet load_distance_set(const Container& c) {
     if (!std::isfinite(set.field.distance[s]) || !is_finite(set.field.closest_point[s])) {
       c.fail("a distance or closest point is not finite");
     }
-    if (set.field.closest_face[s] >= set.nominal.triangles) {
+    if (set.field.closest_face[s] >= set.reference.triangles) {
       c.fail("a closest face lies outside the nominal");
     }
   }

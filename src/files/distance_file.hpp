@@ -11,8 +11,8 @@
 
 namespace ncv {
 
-// What the distance file records of the nominal it was measured against.
-struct NominalInfo {
+// What the distance file records of the surface it was measured against.
+struct ReferenceInfo {
   std::string source;
   std::uint64_t hash = 0;
   std::uint64_t triangles = 0;
@@ -22,7 +22,7 @@ struct NominalInfo {
 struct DistanceSet {
   SampleSet samples;
   DistanceField field;
-  NominalInfo nominal;
+  ReferenceInfo reference;
   std::string sign_method;  // the method used (never "automatic")
   std::string search;       // "grid" or "brute-force"
   double triangles_tested_per_sample = 0;

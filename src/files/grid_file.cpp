@@ -20,20 +20,20 @@ nlohmann::json topology_meta(const TopologyReport& t) {
           {"signed_volume", t.signed_volume}};
 }
 
-nlohmann::json grid_meta(const PreparedNominal& g, const GridStatistics& s) {
+nlohmann::json grid_meta(const IndexedReference& g, const GridStatistics& s) {
   const BoundingBox box = bounding_box(g.mesh);
-  const NominalSurface& nominal = *g.nominal;
+  const ReferenceSurface& nominal = *g.surface;
   return {{"tool", "ncverify " NCV_VERSION},
           {"nominal",
-           {{"source", g.nominal_source},
-            {"hash", hash_hex(g.nominal_hash)},
+           {{"source", g.source},
+            {"hash", hash_hex(g.hash)},
             {"vertices", g.mesh.vertex_count()},
             {"triangles", g.mesh.triangle_count()},
             {"bbox_min", {box.min[0], box.min[1], box.min[2]}},
             {"bbox_max", {box.max[0], box.max[1], box.max[2]}},
             {"topology", topology_meta(nominal.topology())},
             {"flipped_to_outward", nominal.flipped()},
-            {"sign_method", sign_method_name(nominal.automatic_sign_method())}}},
+            {"sign_method", name_of(kSignMethodNames, nominal.automatic_sign_method())}}},
           {"grid",
            {{"origin_local", {g.grid.origin[0], g.grid.origin[1], g.grid.origin[2]}},
             {"cell_size", g.grid.cell_size},
@@ -54,18 +54,7 @@ T number_field(const Container& c, const std::string& pointer) {
 
 }  // namespace
 
-PreparedNominal build_nominal_grid(Mesh mesh, const std::string& source, const GridOptions& options,
-                                   GridStatistics* statistics) {
-  PreparedNominal g;
-  g.nominal_source = source;
-  g.mesh = std::move(mesh);
-  g.nominal_hash = mesh_hash(g.mesh);
-  g.nominal = std::make_unique<NominalSurface>(g.mesh, source);
-  g.grid = build_uniform_grid(*g.nominal, options, statistics);
-  return g;
-}
-
-void write_grid_file(const PreparedNominal& g, const GridStatistics& statistics, OutputFile& out) {
+void write_grid_file(const IndexedReference& g, const GridStatistics& statistics, OutputFile& out) {
   ContainerWriter writer(FileKind::grid, kGridFormatVersion, grid_meta(g, statistics));
   writer.add<double>("nominal_vertices", flat_coordinates(g.mesh.vertices),
                      {g.mesh.vertex_count(), 3});
@@ -77,22 +66,21 @@ void write_grid_file(const PreparedNominal& g, const GridStatistics& statistics,
   writer.write(out);
 }
 
-PreparedNominal read_grid_file(const std::string& path) {
-  return load_nominal_grid(Container::read(path, FileKind::grid, kGridFormatVersion));
+IndexedReference read_grid_file(const std::string& path) {
+  return load_indexed_reference(Container::read(path, FileKind::grid, kGridFormatVersion));
 }
 
-PreparedNominal load_nominal_grid(const Container& c) {
-  PreparedNominal g;
+IndexedReference load_indexed_reference(const Container& c) {
+  IndexedReference g;
   const std::uint64_t V = c.count("/nominal/vertices"), T = c.count("/nominal/triangles");
   g.mesh.vertices = c.get_rows<double, Vec3>("nominal_vertices", V);
   g.mesh.triangles = c.get_rows<std::uint32_t, Triangle>("nominal_triangles", T);
   if (!c.field("/nominal/hash").is_string()) c.fail("nominal hash is malformed");
-  g.nominal_hash = parse_hash_hex(c.field("/nominal/hash").get<std::string>(), c);
-  if (mesh_hash(g.mesh) != g.nominal_hash) c.fail("nominal mesh hash does not match");
-  g.nominal_source = c.field("/nominal/source").is_string()
-                         ? c.field("/nominal/source").get<std::string>()
-                         : std::string("nominal");
-  g.nominal = std::make_unique<NominalSurface>(g.mesh, c.source());
+  g.hash = parse_hash_hex(c.field("/nominal/hash").get<std::string>(), c);
+  if (mesh_hash(g.mesh) != g.hash) c.fail("nominal mesh hash does not match");
+  g.source = c.field("/nominal/source").is_string() ? c.field("/nominal/source").get<std::string>()
+                                                    : std::string("nominal");
+  g.surface = std::make_unique<ReferenceSurface>(g.mesh, c.source());
 
   const nlohmann::json& origin = c.field("/grid/origin_local");
   const nlohmann::json& dims = c.field("/grid/dims");
@@ -112,7 +100,7 @@ PreparedNominal load_nominal_grid(const Container& c) {
   if (!cells) c.fail("grid dimensions overflow");
   g.grid.cell_offsets = c.get<std::uint64_t>("cell_offsets", *cells + 1);
   g.grid.cell_triangles = c.get<std::uint32_t>("cell_triangles", c.count("/grid/references"));
-  g.grid.validate(*g.nominal, c.source());
+  g.grid.validate(*g.surface, c.source());
   return g;
 }
 

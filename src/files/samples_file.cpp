@@ -10,9 +10,9 @@ namespace ncv {
 namespace {
 
 SamplingScheme parse_scheme(const std::string& name, const Container& from) {
-  if (name == "all") return SamplingScheme::all;
-  if (name == "paper-ii") return SamplingScheme::paper_ii;
-  from.fail(fmt::format("unknown sampling scheme '{}'", name));
+  const std::optional<SamplingScheme> scheme = parse_name(kSamplingSchemeNames, name);
+  if (!scheme) from.fail(fmt::format("unknown sampling scheme '{}'", name));
+  return *scheme;
 }
 
 void validate_mesh(const Mesh& mesh, const Container& from) {
@@ -28,11 +28,11 @@ void validate_mesh(const Mesh& mesh, const Container& from) {
 
 // Vertex samples are 0..k-1 in vertex order, exactly the vertices of sampled triangles.
 std::uint64_t validate_vertex_samples(const SampleSet& set, const Container& from) {
-  std::vector<bool> needed(set.workpiece.vertex_count(), false);
+  std::vector<bool> needed(set.mesh.vertex_count(), false);
   for (std::size_t t = 0; t < set.lattice_sizes.size(); ++t) {
     if (set.lattice_sizes[t] == 1) from.fail("a triangle has lattice size 1");
     if (set.lattice_sizes[t] == 0) continue;
-    for (std::uint32_t v : set.workpiece.triangles[t]) needed[v] = true;
+    for (std::uint32_t v : set.mesh.triangles[t]) needed[v] = true;
   }
   std::uint64_t next = 0;
   for (std::size_t v = 0; v < needed.size(); ++v) {
@@ -68,24 +68,20 @@ void validate_lattice(const SampleSet& set, const Container& from) {
 
 }  // namespace
 
-std::string scheme_name(SamplingScheme scheme) {
-  return scheme == SamplingScheme::all ? "all" : "paper-ii";
-}
-
 nlohmann::json sample_set_meta(const SampleSet& set) {
-  const BoundingBox box = bounding_box(set.workpiece);
+  const BoundingBox box = bounding_box(set.mesh);
   return {{"tool", "ncverify " NCV_VERSION},
           {"workpiece",
-           {{"source", set.workpiece_source},
-            {"hash", hash_hex(set.workpiece_hash)},
-            {"vertices", set.workpiece.vertex_count()},
-            {"triangles", set.workpiece.triangle_count()},
+           {{"source", set.source},
+            {"hash", hash_hex(set.mesh_hash)},
+            {"vertices", set.mesh.vertex_count()},
+            {"triangles", set.mesh.triangle_count()},
             {"bbox_min", {box.min[0], box.min[1], box.min[2]}},
             {"bbox_max", {box.max[0], box.max[1], box.max[2]}}}},
           {"sampling",
            {{"step", set.step},
             {"step_spec", set.step_spec},
-            {"scheme", scheme_name(set.scheme)},
+            {"scheme", name_of(kSamplingSchemeNames, set.scheme)},
             {"samples", set.sample_count()}}},
           {"records",
            {{"name", "samples"},
@@ -94,10 +90,10 @@ nlohmann::json sample_set_meta(const SampleSet& set) {
 }
 
 void add_sample_sections(ContainerWriter& writer, const SampleSet& set) {
-  const std::uint64_t V = set.workpiece.vertex_count(), T = set.workpiece.triangle_count(),
+  const std::uint64_t V = set.mesh.vertex_count(), T = set.mesh.triangle_count(),
                       S = set.sample_count();
-  writer.add<double>("workpiece_vertices", flat_coordinates(set.workpiece.vertices), {V, 3});
-  writer.add<std::uint32_t>("workpiece_triangles", flat_indices(set.workpiece.triangles), {T, 3});
+  writer.add<double>("workpiece_vertices", flat_coordinates(set.mesh.vertices), {V, 3});
+  writer.add<std::uint32_t>("workpiece_triangles", flat_indices(set.mesh.triangles), {T, 3});
   writer.add<std::uint32_t>("tri_n", set.lattice_sizes, {T});
   writer.add<std::uint64_t>("tri_first", set.first_interior_sample, {T});
   writer.add<std::uint32_t>("vertex_sample", set.vertex_sample, {V});
@@ -111,14 +107,14 @@ SampleSet load_sample_set(const Container& c) {
   SampleSet set;
   const std::uint64_t V = c.count("/workpiece/vertices"), T = c.count("/workpiece/triangles"),
                       S = c.count("/sampling/samples");
-  set.workpiece.vertices = c.get_rows<double, Vec3>("workpiece_vertices", V);
-  set.workpiece.triangles = c.get_rows<std::uint32_t, Triangle>("workpiece_triangles", T);
-  validate_mesh(set.workpiece, c);
+  set.mesh.vertices = c.get_rows<double, Vec3>("workpiece_vertices", V);
+  set.mesh.triangles = c.get_rows<std::uint32_t, Triangle>("workpiece_triangles", T);
+  validate_mesh(set.mesh, c);
   if (!c.field("/workpiece/source").is_string()) c.fail("workpiece source is malformed");
-  set.workpiece_source = c.field("/workpiece/source").get<std::string>();
+  set.source = c.field("/workpiece/source").get<std::string>();
   if (!c.field("/workpiece/hash").is_string()) c.fail("workpiece hash is malformed");
-  set.workpiece_hash = parse_hash_hex(c.field("/workpiece/hash").get<std::string>(), c);
-  if (mesh_hash(set.workpiece) != set.workpiece_hash) c.fail("workpiece hash does not match");
+  set.mesh_hash = parse_hash_hex(c.field("/workpiece/hash").get<std::string>(), c);
+  if (mesh_hash(set.mesh) != set.mesh_hash) c.fail("workpiece hash does not match");
   if (!c.field("/sampling/step").is_number() || !c.field("/sampling/step_spec").is_string() ||
       !c.field("/sampling/scheme").is_string()) {
     c.fail("sampling parameters are malformed");

@@ -10,8 +10,6 @@
 
 namespace ncv {
 
-std::string scheme_name(SamplingScheme scheme);  // "all" or "paper-ii"
-
 // Metadata describing the sample set (workpiece, sampling parameters, counts).
 nlohmann::json sample_set_meta(const SampleSet& set);
 // Adds the workpiece and sample sections; `set` must outlive the writer.

@@ -125,27 +125,6 @@ std::vector<ColorStop> turbo_stops(ValueRange range) {
 
 }  // namespace
 
-std::string_view to_string(ColorMapKind kind) {
-  switch (kind) {
-    case ColorMapKind::tolerance:
-      return "tolerance";
-    case ColorMapKind::diverging:
-      return "diverging";
-    case ColorMapKind::turbo:
-      return "turbo";
-  }
-  return "unknown";
-}
-
-ColorMapKind parse_color_map_kind(std::string_view name) {
-  for (const ColorMapKind kind :
-       {ColorMapKind::tolerance, ColorMapKind::diverging, ColorMapKind::turbo}) {
-    if (name == to_string(kind)) return kind;
-  }
-  throw UsageError(
-      fmt::format("unknown colour map '{}' (use tolerance, diverging or turbo)", name));
-}
-
 Rgb ColorMap::rgb(double value) const {
   if (std::isnan(value)) return kNoValueColor;
   switch (kind) {
@@ -172,7 +151,8 @@ std::vector<ColorStop> ColorMap::stops() const {
 }
 
 std::string ColorMap::description() const {
-  std::string text = fmt::format("colour map {} over {}:{}", to_string(kind), range.lo, range.hi);
+  std::string text =
+      fmt::format("colour map {} over {}:{}", name_of(kColorMapNames, kind), range.lo, range.hi);
   if (tolerance) text += fmt::format(", tolerance {}", to_string(*tolerance));
   if (kind == ColorMapKind::diverging)
     text += fmt::format(", white at {}", diverging_centre(range));

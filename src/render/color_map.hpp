@@ -18,6 +18,7 @@
 
 #include "statistics/area_histogram.hpp"
 #include "statistics/tolerance.hpp"
+#include "util/enum_names.hpp"
 
 namespace ncv {
 
@@ -27,9 +28,9 @@ inline constexpr Rgb kNoValueColor{128, 128, 128};
 
 enum class ColorMapKind { tolerance, diverging, turbo };
 
-// "tolerance", "diverging", "turbo"; parse throws UsageError listing the names.
-std::string_view to_string(ColorMapKind kind);
-ColorMapKind parse_color_map_kind(std::string_view name);
+inline constexpr EnumName<ColorMapKind> kColorMapNames[] = {{ColorMapKind::tolerance, "tolerance"},
+                                                            {ColorMapKind::diverging, "diverging"},
+                                                            {ColorMapKind::turbo, "turbo"}};
 
 // A point of the map: between consecutive stops the colour is linear in RGB; two stops at
 // one value mark a jump.

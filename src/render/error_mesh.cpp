@@ -20,7 +20,7 @@ std::uint32_t vertex_index(std::uint64_t sample) {
 }  // namespace
 
 ErrorMesh workpiece_error_mesh(const SampleSet& samples, std::span<const double> d) {
-  ErrorMesh out{samples.workpiece, std::vector<double>(samples.workpiece.vertex_count(), kNoValue)};
+  ErrorMesh out{samples.mesh, std::vector<double>(samples.mesh.vertex_count(), kNoValue)};
   for (std::size_t v = 0; v < out.values.size(); ++v) {
     if (samples.vertex_sample[v] != kNoSample) out.values[v] = d[samples.vertex_sample[v]];
   }
@@ -29,7 +29,7 @@ ErrorMesh workpiece_error_mesh(const SampleSet& samples, std::span<const double>
 
 ErrorMesh lattice_error_mesh(const SampleSet& samples, std::span<const double> d) {
   // PLY face lists hold signed 32-bit vertex indices.
-  if (samples.sample_count() + samples.workpiece.vertex_count() >
+  if (samples.sample_count() + samples.mesh.vertex_count() >
       std::uint64_t{std::numeric_limits<std::int32_t>::max()}) {
     throw UsageError(
         fmt::format("{} samples are too many for one PLY mesh; use the workpiece "
@@ -37,7 +37,7 @@ ErrorMesh lattice_error_mesh(const SampleSet& samples, std::span<const double> d
                     samples.sample_count()));
   }
   ErrorMesh out{{samples.positions, {}}, std::vector<double>(d.begin(), d.end())};
-  const Mesh& workpiece = samples.workpiece;
+  const Mesh& workpiece = samples.mesh;
   std::vector<std::uint32_t> extra_vertex(workpiece.vertex_count(), kNoSample);
   const auto corner_vertex = [&](std::uint32_t v) {
     if (samples.vertex_sample[v] != kNoSample) return samples.vertex_sample[v];

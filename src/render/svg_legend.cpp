@@ -103,7 +103,7 @@ void write_legend_svg(std::ostream& out, const ColorMap& map, std::string_view u
   fmt::print(out,
              "<text x=\"{}\" y=\"40\" font-size=\"11\" fill=\"#555\">+ excess material, "
              "\u2212 gouge; map: {}</text>\n",
-             kMargin, to_string(map.kind));
+             kMargin, name_of(kColorMapNames, map.kind));
   write_gradient(out, map, scale);
   write_ticks(out, map, scale);
   if (map.tolerance) {

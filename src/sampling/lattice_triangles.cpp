@@ -7,7 +7,7 @@ namespace ncv {
 
 double lattice_triangle_area(const SampleSet& samples, std::size_t t) {
   const double steps = samples.lattice_sizes[t] - 1.0;
-  return triangle_area(samples.workpiece, t) / (steps * steps);
+  return triangle_area(samples.mesh, t) / (steps * steps);
 }
 
 Buffer<LinearPatch> lattice_patches(const SampleSet& samples, std::span<const double> d) {

@@ -3,7 +3,7 @@
 namespace ncv {
 
 std::vector<Vec3> sample_normals(const SampleSet& samples) {
-  const Mesh& mesh = samples.workpiece;
+  const Mesh& mesh = samples.mesh;
   std::vector<Vec3> vertex_normals(mesh.vertex_count());
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     const Vec3 weighted = area_vector(mesh, t);  // |cross| = twice the area

@@ -29,7 +29,7 @@ std::pair<std::uint32_t, std::uint32_t> corner_lattice_coordinates(int k, std::u
 // 0 .. count-1, each owned by its lowest-index sampled triangle (found in parallel by an
 // atomic minimum, so the result does not depend on the thread count).
 std::uint32_t assign_vertex_samples(SampleSet& set) {
-  const Mesh& mesh = set.workpiece;
+  const Mesh& mesh = set.mesh;
   set.vertex_sample.assign(mesh.vertex_count(), kNoSample);
   std::vector<std::uint32_t> owner_of_vertex(mesh.vertex_count(), kNoSample);
   tbb::parallel_for(
@@ -71,7 +71,7 @@ bool is_corner(std::uint32_t i, std::uint32_t j, std::uint32_t n) {
 void fill_triangle_samples(SampleSet& set, std::size_t t) {
   const std::uint32_t n = set.lattice_sizes[t];
   if (n < 3) return;
-  const Mesh& mesh = set.workpiece;
+  const Mesh& mesh = set.mesh;
   const Vec3 a = mesh.corner(t, 0);
   const double steps = n - 1;
   const Vec3 e1 = (mesh.corner(t, 1) - a) / steps;
@@ -100,9 +100,9 @@ std::uint32_t lattice_size(double area, double step) {
 
 std::uint64_t SampleSet::sample_at(std::size_t t, std::uint32_t i, std::uint32_t j) const {
   const std::uint64_t n = lattice_sizes[t];
-  if (i == 0 && j == 0) return vertex_sample[workpiece.triangles[t][0]];
-  if (i == n - 1 && j == 0) return vertex_sample[workpiece.triangles[t][1]];
-  if (i == 0 && j == n - 1) return vertex_sample[workpiece.triangles[t][2]];
+  if (i == 0 && j == 0) return vertex_sample[mesh.triangles[t][0]];
+  if (i == n - 1 && j == 0) return vertex_sample[mesh.triangles[t][1]];
+  if (i == 0 && j == n - 1) return vertex_sample[mesh.triangles[t][2]];
   // Row-major rank of (i, j) minus the corners that precede it: (0,0) always, and
   // (0,n-1) once past row 0.
   const std::uint64_t rank = i * n - i * (i - 1) / 2 + j;
@@ -173,10 +173,10 @@ SampleSet sample_mesh(Mesh workpiece, double step, SamplingScheme scheme, Sampli
 
 SampleSet sample_mesh(Mesh workpiece, SamplingPlan plan, SamplingReport* report) {
   SampleSet set;
-  set.workpiece = std::move(workpiece);
+  set.mesh = std::move(workpiece);
   set.step = plan.step;
   set.scheme = plan.scheme;
-  set.workpiece_hash = mesh_hash(set.workpiece);
+  set.mesh_hash = mesh_hash(set.mesh);
   set.lattice_sizes = std::move(plan.lattice_sizes);
 
   const std::uint32_t vertex_samples = assign_vertex_samples(set);
@@ -204,7 +204,7 @@ SampleSet sample_mesh(Mesh workpiece, SamplingPlan plan, SamplingReport* report)
 
   if (report) {
     *report = plan.counts;
-    report->triangles = set.workpiece.triangle_count();
+    report->triangles = set.mesh.triangle_count();
     report->samples = set.sample_count();
   }
   return set;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "mesh/mesh.hpp"
+#include "util/enum_names.hpp"
 
 namespace ncv {
 
@@ -20,6 +21,9 @@ enum class SamplingScheme : std::uint32_t {
   all = 1,       // paper scheme I: triangles with n < 2 contribute their three vertices
   paper_ii = 2,  // paper scheme II: triangles with n < 2 are not sampled
 };
+
+inline constexpr EnumName<SamplingScheme> kSamplingSchemeNames[] = {
+    {SamplingScheme::all, "all"}, {SamplingScheme::paper_ii, "paper-ii"}};
 
 inline constexpr std::uint32_t kNoSample = std::numeric_limits<std::uint32_t>::max();
 
@@ -35,12 +39,12 @@ constexpr std::uint64_t lattice_interior_count(std::uint64_t n) {
 }
 
 struct SampleSet {
-  Mesh workpiece;
-  std::string workpiece_source;  // the file it came from, for reports
-  double step = 0;               // sampling step in model units
-  std::string step_spec;         // as the user gave it ("0.1%" or "0.05")
+  Mesh mesh;              // the sampled surface: the workpiece, or the nominal in reverse
+  std::string source;     // the file it came from, for reports
+  double step = 0;        // sampling step in model units
+  std::string step_spec;  // as the user gave it ("0.1%" or "0.05")
   SamplingScheme scheme = SamplingScheme::all;
-  std::uint64_t workpiece_hash = 0;
+  std::uint64_t mesh_hash = 0;
 
   std::vector<std::uint32_t> lattice_sizes;  // lattice size per triangle; 0 = not sampled
   std::vector<std::uint64_t>

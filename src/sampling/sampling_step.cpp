@@ -4,13 +4,15 @@
 #include <cmath>
 #include <string_view>
 
+#include <fmt/format.h>
+
 #include "util/error.hpp"
 
 namespace ncv {
 
 SamplingStep SamplingStep::parse(const std::string& text) {
   std::string_view number = text;
-  SamplingStep step;
+  SamplingStep step{0, false};
   if (number.ends_with('%')) {
     step.relative = true;
     number.remove_suffix(1);
@@ -26,6 +28,10 @@ SamplingStep SamplingStep::parse(const std::string& text) {
     throw UsageError("invalid step '" + text + "': it must be a positive finite number");
   }
   return step;
+}
+
+std::string SamplingStep::text() const {
+  return relative ? fmt::format("{}%", value) : fmt::format("{}", value);
 }
 
 }  // namespace ncv

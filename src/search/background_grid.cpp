@@ -89,7 +89,7 @@ void BackgroundGrid::validate(std::size_t triangle_count, const std::string& sou
   check_lists(*this, triangle_count, source);
 }
 
-void BackgroundGrid::validate(const NominalSurface& nominal, const std::string& source) const {
+void BackgroundGrid::validate(const ReferenceSurface& nominal, const std::string& source) const {
   validate(nominal.triangle_count(), source);
   const BoundingBox grid_box = bounds();
   const BoundingBox& part = nominal.local_bounds();

@@ -1,7 +1,7 @@
 // The background grid of the closest-triangle search (paper §3.3) as plain arrays, so the
 // grid-build command can write it and the distance command load it back.
 //
-// Frame: the grid lives in the nominal's local frame (NominalSurface::origin() is its zero).
+// Frame: the grid lives in the nominal's local frame (ReferenceSurface::origin() is its zero).
 // Cell (i, j, k) spans origin + [i, i+1] x [j, j+1] x [k, k+1] * cell_size; every bound is
 // computed by cell_bound(origin[axis], cell_size, i) = origin[axis] + i * cell_size, in the
 // builder and the search alike, so both agree on each bound to the last bit. Cells are
@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "geometry/bounding_box.hpp"
-#include "nominal/nominal_surface.hpp"
+#include "reference/reference_surface.hpp"
 
 namespace ncv {
 
@@ -60,7 +60,7 @@ struct BackgroundGrid {
   void validate(std::size_t triangle_count, const std::string& source) const;
   // The above, plus: the grid box contains the nominal (in its local frame), which the
   // search's stopping rule assumes.
-  void validate(const NominalSurface& nominal, const std::string& source) const;
+  void validate(const ReferenceSurface& nominal, const std::string& source) const;
 };
 
 }  // namespace ncv

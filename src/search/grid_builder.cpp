@@ -152,7 +152,8 @@ void for_each_touched_cell(const Layout& layout, const TriangleCorners& t, Visit
 
 // Whether the candidate cells of all triangles stay within the budget; stops counting once
 // they do not (the verdict does not depend on which thread saw the excess first).
-bool candidates_within(const NominalSurface& nominal, const Layout& layout, std::uint64_t budget) {
+bool candidates_within(const ReferenceSurface& nominal, const Layout& layout,
+                       std::uint64_t budget) {
   std::atomic<std::uint64_t> total{0};
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nominal.triangle_count(), 256),
                     [&](const tbb::blocked_range<std::size_t>& range) {
@@ -166,7 +167,7 @@ bool candidates_within(const NominalSurface& nominal, const Layout& layout, std:
   return total.load() <= budget;
 }
 
-Layout choose_layout(const NominalSurface& nominal, double h, GridStatistics& stats) {
+Layout choose_layout(const ReferenceSurface& nominal, double h, GridStatistics& stats) {
   const auto triangles = static_cast<std::uint64_t>(nominal.triangle_count());
   const double cell_budget =
       static_cast<double>(std::max(kCellsPerTriangle * triangles, kMinCellBudget));
@@ -200,7 +201,7 @@ struct ReferenceChunk {
 
 constexpr std::size_t kChunkTriangles = 4096;
 
-std::vector<ReferenceChunk> touched_cells(const NominalSurface& nominal, const Layout& layout) {
+std::vector<ReferenceChunk> touched_cells(const ReferenceSurface& nominal, const Layout& layout) {
   const std::size_t triangles = nominal.triangle_count();
   std::vector<ReferenceChunk> chunks((triangles + kChunkTriangles - 1) / kChunkTriangles);
   tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
@@ -260,7 +261,7 @@ void summarise(const BackgroundGrid& grid, std::size_t triangles, GridStatistics
 
 }  // namespace
 
-double default_cell_size(const NominalSurface& nominal) {
+double default_cell_size(const ReferenceSurface& nominal) {
   double area = 0;
   for (const TriangleCorners& t : nominal.corners())
     area += 0.5 * norm(cross(t[1] - t[0], t[2] - t[0]));
@@ -271,8 +272,8 @@ double default_cell_size(const NominalSurface& nominal) {
   return diagonal > 0 ? diagonal / std::cbrt(triangles) : 1.0;
 }
 
-BackgroundGrid build_uniform_grid(const NominalSurface& nominal, const GridOptions& options,
-                                  GridStatistics* statistics) {
+BackgroundGrid build_background_grid(const ReferenceSurface& nominal, const GridOptions& options,
+                                     GridStatistics* statistics) {
   if (options.cell_size != 0 && !(std::isfinite(options.cell_size) && options.cell_size > 0)) {
     throw UsageError(fmt::format("grid cell size {} is not a positive number", options.cell_size));
   }

@@ -36,7 +36,7 @@
 #include <array>
 #include <cstdint>
 
-#include "nominal/nominal_surface.hpp"
+#include "reference/reference_surface.hpp"
 #include "search/background_grid.hpp"
 
 namespace ncv {
@@ -66,10 +66,11 @@ struct GridStatistics {
 
 // The paper's cell edge sqrt(4 A / sqrt 3) for the mean triangle area A; for a mesh without
 // area, the bounding-box diagonal over the cube root of the triangle count (1 if that is 0).
-double default_cell_size(const NominalSurface& nominal);
+double default_cell_size(const ReferenceSurface& nominal);
 
 // Throws UsageError for a cell size option that is not a finite positive number.
-BackgroundGrid build_uniform_grid(const NominalSurface& nominal, const GridOptions& options = {},
-                                  GridStatistics* statistics = nullptr);
+BackgroundGrid build_background_grid(const ReferenceSurface& nominal,
+                                     const GridOptions& options = {},
+                                     GridStatistics* statistics = nullptr);
 
 }  // namespace ncv

@@ -59,7 +59,7 @@ class RegionBuilder {
   // Only lattices of size >= 3 put samples inside an edge; the corners are shared already.
   void connect_across_edges() {
     std::vector<EdgeSide> sides;
-    const Mesh& mesh = samples_.workpiece;
+    const Mesh& mesh = samples_.mesh;
     for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
       if (samples_.lattice_sizes[t] < 3) continue;
       for (int k = 0; k < 3; ++k) {
@@ -113,7 +113,7 @@ class RegionBuilder {
     std::vector<EdgePoint> points;
     for (const EdgeSide& side : sides) {
       const std::uint32_t n = samples_.lattice_sizes[side.triangle];
-      const bool reversed = samples_.workpiece.triangles[side.triangle][side.corner] != side.v0;
+      const bool reversed = samples_.mesh.triangles[side.triangle][side.corner] != side.v0;
       for (std::uint32_t m = 1; m + 1 < n; ++m) {
         const auto [i, j] = edge_lattice_point(side.corner, m, n);
         points.push_back(

@@ -36,7 +36,7 @@ struct TriangleCounts {
 };
 
 void count_triangles(const SampleSet& samples, ErrorStatistics& stats) {
-  const Mesh& mesh = samples.workpiece;
+  const Mesh& mesh = samples.mesh;
   const TriangleCounts counts = ordered_reduce(
       mesh.triangle_count(), kPatchBlock, TriangleCounts{},
       [&](std::size_t begin, std::size_t end) {

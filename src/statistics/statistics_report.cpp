@@ -67,9 +67,9 @@ void text_header(const PartReport& r, fmt::memory_buffer& out) {
   const DistanceSet& d = *r.distances;
   const ErrorStatistics& s = r.statistics;
   append(out, "part        {}\n", r.part);
-  append(out, "workpiece   {}: {} triangles, area {}\n", d.samples.workpiece_source, s.triangles,
+  append(out, "workpiece   {}: {} triangles, area {}\n", d.samples.source, s.triangles,
          s.workpiece_area);
-  append(out, "nominal     {}: {} triangles\n", d.nominal.source, d.nominal.triangles);
+  append(out, "nominal     {}: {} triangles\n", d.reference.source, d.reference.triangles);
   append(out,
          "sampling    step {} ({}), scheme {}: {} samples; {} triangles sampled at their vertices "
          "only, {} not sampled\n",
@@ -122,7 +122,7 @@ void text_tolerance(const PartReport& r, fmt::memory_buffer& out) {
 PartReport make_part_report(const DistanceSet& distances, const std::optional<Tolerance>& tolerance,
                             const HistogramOptions& histogram) {
   PartReport report;
-  report.part = std::filesystem::path(distances.samples.workpiece_source).stem().string();
+  report.part = std::filesystem::path(distances.samples.source).stem().string();
   report.distances = &distances;
   report.statistics =
       compute_error_statistics(distances.samples, distances.field.distance, tolerance, histogram);
@@ -144,21 +144,21 @@ nlohmann::json report_json(const PartReport& r) {
                               {"above_range", s.histogram.above_range}};
   nlohmann::json j = {{"part", r.part},
                       {"workpiece",
-                       {{"source", d.samples.workpiece_source},
-                        {"hash", hash_hex(d.samples.workpiece_hash)},
+                       {{"source", d.samples.source},
+                        {"hash", hash_hex(d.samples.mesh_hash)},
                         {"triangles", s.triangles},
                         {"area", s.workpiece_area},
                         {"sampled_area", s.sampled_area},
                         {"triangles_vertex_only", s.triangles_vertex_only},
                         {"triangles_unsampled", s.triangles_unsampled}}},
                       {"nominal",
-                       {{"source", d.nominal.source},
-                        {"hash", hash_hex(d.nominal.hash)},
-                        {"triangles", d.nominal.triangles}}},
+                       {{"source", d.reference.source},
+                        {"hash", hash_hex(d.reference.hash)},
+                        {"triangles", d.reference.triangles}}},
                       {"sampling",
                        {{"step", d.samples.step},
                         {"step_spec", d.samples.step_spec},
-                        {"scheme", d.samples.scheme == SamplingScheme::all ? "all" : "paper-ii"},
+                        {"scheme", name_of(kSamplingSchemeNames, d.samples.scheme)},
                         {"samples", s.samples}}},
                       {"distance",
                        {{"search", d.search},
@@ -203,11 +203,10 @@ std::string report_csv_row(const PartReport& r) {
     for (char c : text) escaped += c == '"' ? std::string("\"\"") : std::string(1, c);
     return "\"" + escaped + "\"";
   };
-  std::string row =
-      fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}", quoted(r.part),
-                  quoted(r.distances->samples.workpiece_source),
-                  quoted(r.distances->nominal.source), s.triangles, s.samples, s.workpiece_area,
-                  s.max.value, s.min.value, s.mean, s.rms, s.std_dev, s.max_abs.value);
+  std::string row = fmt::format(
+      "{},{},{},{},{},{},{},{},{},{},{},{}", quoted(r.part), quoted(r.distances->samples.source),
+      quoted(r.distances->reference.source), s.triangles, s.samples, s.workpiece_area, s.max.value,
+      s.min.value, s.mean, s.rms, s.std_dev, s.max_abs.value);
   for (const Percentile& p : s.percentiles) row += fmt::format(",{}", p.value);
   if (s.tolerance) {
     const ToleranceAreas& t = *s.tolerance;
@@ -219,13 +218,6 @@ std::string report_csv_row(const PartReport& r) {
     row += ",,,,,,,,,";
   }
   return row + "\n";
-}
-
-ReportFormat parse_report_format(const std::string& name) {
-  if (name == "json") return ReportFormat::json;
-  if (name == "csv") return ReportFormat::csv;
-  if (name == "text") return ReportFormat::text;
-  throw UsageError("unknown report format '" + name + "': use text, json or csv");
 }
 
 std::string format_report(const PartReport& r, ReportFormat format, bool csv_header) {

@@ -11,6 +11,7 @@
 #include "files/distance_file.hpp"
 #include "statistics/error_regions.hpp"
 #include "statistics/error_statistics.hpp"
+#include "util/enum_names.hpp"
 
 namespace ncv {
 
@@ -31,7 +32,8 @@ std::string report_csv_header();
 std::string report_csv_row(const PartReport& report);
 
 enum class ReportFormat { text, json, csv };
-ReportFormat parse_report_format(const std::string& name);  // "text", "json", "csv"
+inline constexpr EnumName<ReportFormat> kReportFormatNames[] = {
+    {ReportFormat::text, "text"}, {ReportFormat::json, "json"}, {ReportFormat::csv, "csv"}};
 // The whole report in one format; csv_header adds the CSV header line.
 std::string format_report(const PartReport& report, ReportFormat format, bool csv_header = true);
 

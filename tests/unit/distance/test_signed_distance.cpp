@@ -14,6 +14,7 @@
 #include "distance/signed_distance.hpp"
 #include "nominal_fixtures.hpp"
 #include "search/grid_builder.hpp"
+#include "search/indexed_reference.hpp"
 #include "search/search_index.hpp"
 #include "util/error.hpp"
 
@@ -23,13 +24,15 @@ using ncv::SignMethod;
 using ncv::Vec3;
 namespace fx = ncv::fixtures;
 
-ncv::DistanceField distances(const ncv::NominalSurface& nominal, const ncv::BackgroundGrid* grid,
+// Over the reference's grid, or by brute force.
+ncv::DistanceField distances(const ncv::IndexedReference& reference, bool grid,
                              const std::vector<Vec3>& points, SignMethod method,
                              ncv::SearchStatistics* stats = nullptr) {
-  std::optional<ncv::SearchIndex> search;
-  if (grid) search.emplace(nominal.corners(), *grid);
-  return ncv::compute_signed_distances(nominal, search ? &*search : nullptr, points, {}, method,
-                                       stats);
+  if (!grid) {
+    return ncv::compute_signed_distances(*reference.surface, points, {}, method, stats);
+  }
+  const ncv::SearchIndex index(reference);
+  return ncv::compute_signed_distances(index, points, {}, method, stats);
 }
 
 // Query points of every kind around a mesh: on it, just off it, inside its box, far out,
@@ -84,16 +87,16 @@ void require_identical(const ncv::DistanceField& a, const ncv::DistanceField& b)
 
 void require_grid_equals_brute_force(const ncv::Mesh& mesh, std::mt19937_64& rng, std::size_t count,
                                      SignMethod method) {
-  const ncv::NominalSurface nominal(mesh, "nominal");
+  const ncv::IndexedReference nominal = ncv::index_reference(mesh, "nominal");
   const std::vector<Vec3> points = mixed_points(rng, mesh, count);
-  const ncv::DistanceField reference = distances(nominal, nullptr, points, method);
-  const double base = ncv::default_cell_size(nominal);
+  const ncv::DistanceField reference = distances(nominal, false, points, method);
+  const double base = ncv::default_cell_size(*nominal.surface);
   for (double factor : {1.0, 0.3, 4.0}) {
     ncv::GridOptions options;
     options.cell_size = base * factor;
-    const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal, options);
     INFO("cell size factor " << factor);
-    require_identical(distances(nominal, &grid, points, method), reference);
+    require_identical(
+        distances(ncv::index_reference(mesh, "nominal", options), true, points, method), reference);
   }
 }
 
@@ -172,12 +175,11 @@ TEST_CASE("ties between triangles go to the lowest index", "[distance]") {
   const std::size_t half = mesh.triangle_count();
   for (std::size_t t = 0; t < half; ++t) mesh.triangles.push_back(mesh.triangles[t]);
   std::reverse(mesh.triangles.begin(), mesh.triangles.end());  // copies first, originals last
-  const ncv::NominalSurface nominal(mesh, "doubled");
-  const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
+  const ncv::IndexedReference nominal = ncv::index_reference(mesh, "doubled");
   std::mt19937_64 rng(12);
   const std::vector<Vec3> points = mixed_points(rng, mesh, 2000);
-  const ncv::DistanceField brute = distances(nominal, nullptr, points, SignMethod::winding);
-  const ncv::DistanceField fast = distances(nominal, &grid, points, SignMethod::winding);
+  const ncv::DistanceField brute = distances(nominal, false, points, SignMethod::winding);
+  const ncv::DistanceField fast = distances(nominal, true, points, SignMethod::winding);
   require_identical(brute, fast);
   for (std::uint32_t face : fast.closest_face) CHECK(face < half);
 }
@@ -210,15 +212,13 @@ TEST_CASE("distances and signs around a box are the analytic ones", "[distance]"
                                   fine.fill(0, 0, 0, 4, 4, 4);
                                   return fine.mesh(0.25);
                                 }()}) {
-    const ncv::NominalSurface nominal(mesh, "box");
-    const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
+    const ncv::IndexedReference nominal = ncv::index_reference(mesh, "box");
     for (SignMethod method :
          {SignMethod::automatic, SignMethod::pseudonormal, SignMethod::winding}) {
-      for (const ncv::BackgroundGrid* g :
-           {&grid, static_cast<const ncv::BackgroundGrid*>(nullptr)}) {
-        const ncv::DistanceField field = distances(nominal, g, points, method);
+      for (bool grid : {true, false}) {
+        const ncv::DistanceField field = distances(nominal, grid, points, method);
         for (std::size_t i = 0; i < points.size(); ++i) {
-          INFO("point " << i << " method " << ncv::sign_method_name(method));
+          INFO("point " << i << " method " << ncv::name_of(ncv::kSignMethodNames, method));
           CHECK(field.distance[i] == Approx(cases[i].distance).margin(1e-14));
           if (cases[i].distance == 0) CHECK_FALSE(std::signbit(field.distance[i]));
           const Vec3 c = field.closest_point[i];
@@ -235,20 +235,18 @@ TEST_CASE("signs at sharp concave and convex edges and corners of a pocket", "[d
   const ncv::Mesh mesh = solid.mesh(scale);
   std::mt19937_64 rng(21);
   const std::vector<Vec3> points = points_around(mesh, rng, offset);
-  const ncv::NominalSurface nominal(mesh, "pocket");
-  REQUIRE(nominal.automatic_sign_method() == SignMethod::pseudonormal);
-  const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
+  const ncv::IndexedReference nominal = ncv::index_reference(mesh, "pocket");
+  REQUIRE(nominal.surface->automatic_sign_method() == SignMethod::pseudonormal);
   for (SignMethod method : {SignMethod::automatic, SignMethod::pseudonormal, SignMethod::winding}) {
-    INFO("method " << ncv::sign_method_name(method));
-    require_signs(distances(nominal, &grid, points, method), points, solid, scale, offset);
+    INFO("method " << ncv::name_of(ncv::kSignMethodNames, method));
+    require_signs(distances(nominal, true, points, method), points, solid, scale, offset);
   }
   SECTION("the same against the inward-oriented copy, which is flipped back") {
-    const ncv::NominalSurface inward(fx::flipped(mesh), "inward");
-    REQUIRE(inward.flipped());
-    REQUIRE(inward.automatic_sign_method() == SignMethod::pseudonormal);
-    const ncv::BackgroundGrid inward_grid = ncv::build_uniform_grid(inward);
+    const ncv::IndexedReference inward = ncv::index_reference(fx::flipped(mesh), "inward");
+    REQUIRE(inward.surface->flipped());
+    REQUIRE(inward.surface->automatic_sign_method() == SignMethod::pseudonormal);
     for (SignMethod method : {SignMethod::automatic, SignMethod::winding}) {
-      require_signs(distances(inward, &inward_grid, points, method), points, solid, scale, offset);
+      require_signs(distances(inward, true, points, method), points, solid, scale, offset);
     }
   }
 }
@@ -265,31 +263,30 @@ TEST_CASE("an open nominal is signed by the winding number", "[distance]") {
     return true;
   });
   REQUIRE(mesh.triangle_count() == solid.mesh(1.0).triangle_count() - 2);
-  const ncv::NominalSurface nominal(mesh, "open");
-  CHECK(nominal.automatic_sign_method() == SignMethod::winding);
-  const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
+  const ncv::IndexedReference nominal = ncv::index_reference(mesh, "open");
+  CHECK(nominal.surface->automatic_sign_method() == SignMethod::winding);
   std::mt19937_64 rng(31);
   std::vector<Vec3> points;
   for (Vec3 p : points_around(mesh, rng, 0.01)) {
     if (p[2] > 0.5) points.push_back(p);  // away from the hole
   }
-  require_signs(distances(nominal, &grid, points, SignMethod::automatic), points, solid, 1.0, 0.01);
+  require_signs(distances(nominal, true, points, SignMethod::automatic), points, solid, 1.0, 0.01);
 }
 
 TEST_CASE("the paper's sign follows the sample normal", "[distance]") {
-  const ncv::NominalSurface nominal(fx::box({0, 0, 0}, {1, 1, 1}), "box");
+  const ncv::IndexedReference nominal = ncv::index_reference(fx::box({0, 0, 0}, {1, 1, 1}), "box");
   const std::vector<Vec3> points = {
       {0.5, 0.5, 1.2}, {0.5, 0.5, 1.2}, {0.5, 0.5, 0.8}, {0.5, 0.5, 1.2}, {0.5, 0.5, 1.0}};
   const std::vector<Vec3> normals = {{0, 0, 1}, {0, 0, -1}, {0, 0, 1}, {0, 0, 0}, {0, 0, -1}};
   const ncv::DistanceField field =
-      ncv::compute_signed_distances(nominal, nullptr, points, normals, SignMethod::paper);
+      ncv::compute_signed_distances(*nominal.surface, points, normals, SignMethod::paper);
   CHECK(field.distance[0] == Approx(0.2));
   CHECK(field.distance[1] == Approx(-0.2));
   CHECK(field.distance[2] == Approx(-0.2));  // inside, but the paper only asks N_p
   CHECK(field.distance[3] == Approx(-0.2));  // no normal: not positive
   CHECK(field.distance[4] == 0.0);
   CHECK_FALSE(std::signbit(field.distance[4]));
-  CHECK_THROWS_AS(ncv::compute_signed_distances(nominal, nullptr, points, {}, SignMethod::paper),
+  CHECK_THROWS_AS(ncv::compute_signed_distances(*nominal.surface, points, {}, SignMethod::paper),
                   ncv::UsageError);
 }
 
@@ -300,22 +297,21 @@ TEST_CASE("where a pseudonormal vanishes the exact winding number decides", "[di
   ncv::Mesh sheet;
   sheet.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   sheet.triangles = {{0, 1, 2}, {0, 2, 1}};
-  const ncv::NominalSurface nominal(sheet, "sheet");
+  const ncv::IndexedReference nominal = ncv::index_reference(sheet, "sheet");
   const std::vector<Vec3> points = {{0.5, -0.5, 0}, {1, 1, 0}, {-0.5, 0.5, 0}, {2, -1, 0}};
-  const ncv::DistanceField field = distances(nominal, nullptr, points, SignMethod::pseudonormal);
+  const ncv::DistanceField field = distances(nominal, false, points, SignMethod::pseudonormal);
   for (double d : field.distance) CHECK(d > 0);
 }
 
 TEST_CASE("results do not depend on the thread count", "[distance]") {
   const ncv::Mesh mesh = fx::torus(3, 1, 80, 40);
-  const ncv::NominalSurface nominal(mesh, "torus");
-  const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
+  const ncv::IndexedReference nominal = ncv::index_reference(mesh, "torus");
   std::mt19937_64 rng(41);
   const std::vector<Vec3> points = mixed_points(rng, mesh, 16000);
   for (SignMethod method : {SignMethod::pseudonormal, SignMethod::winding}) {
     const auto run = [&](int threads, ncv::SearchStatistics& stats) {
       tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-      return distances(nominal, &grid, points, method, &stats);
+      return distances(nominal, true, points, method, &stats);
     };
     ncv::SearchStatistics one_stats, two_stats;
     const ncv::DistanceField one = run(1, one_stats);
@@ -330,16 +326,14 @@ TEST_CASE("results do not depend on the thread count", "[distance]") {
 TEST_CASE("a part far from the origin keeps its precision", "[distance]") {
   const Vec3 shift{1e6, 0, 0};
   const ncv::Mesh mesh = fx::torus(3, 1, 60, 30);
-  const ncv::NominalSurface here(mesh, "here");
-  const ncv::NominalSurface there(fx::translated(mesh, shift), "there");
+  const ncv::IndexedReference here = ncv::index_reference(mesh, "here");
+  const ncv::IndexedReference there = ncv::index_reference(fx::translated(mesh, shift), "there");
   std::mt19937_64 rng(51);
   std::vector<Vec3> points = points_around(mesh, rng, 0.01);
   std::vector<Vec3> shifted = points;
   for (Vec3& p : shifted) p += shift;
-  const ncv::BackgroundGrid here_grid = ncv::build_uniform_grid(here);
-  const ncv::BackgroundGrid there_grid = ncv::build_uniform_grid(there);
-  const ncv::DistanceField a = distances(here, &here_grid, points, SignMethod::automatic);
-  const ncv::DistanceField b = distances(there, &there_grid, shifted, SignMethod::automatic);
+  const ncv::DistanceField a = distances(here, true, points, SignMethod::automatic);
+  const ncv::DistanceField b = distances(there, true, shifted, SignMethod::automatic);
   for (std::size_t i = 0; i < points.size(); ++i) {
     // Coordinates near 1e6 are spaced 1.2e-10 apart: that is all that may differ (a
     // closest point slides a little more where the surface curves away).
@@ -350,8 +344,7 @@ TEST_CASE("a part far from the origin keeps its precision", "[distance]") {
 
 TEST_CASE("search statistics count queries, triangles and cells", "[distance]") {
   const ncv::Mesh mesh = fx::torus(3, 1, 40, 20);
-  const ncv::NominalSurface nominal(mesh, "torus");
-  const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
+  const ncv::IndexedReference nominal = ncv::index_reference(mesh, "torus");
   std::mt19937_64 rng(61);
   std::vector<Vec3> points;
   for (int i = 0; i < 500; ++i) {
@@ -359,8 +352,8 @@ TEST_CASE("search statistics count queries, triangles and cells", "[distance]") 
                      0.01 * fx::random_direction(rng));
   }
   ncv::SearchStatistics brute, fast;
-  distances(nominal, nullptr, points, SignMethod::automatic, &brute);
-  distances(nominal, &grid, points, SignMethod::automatic, &fast);
+  distances(nominal, false, points, SignMethod::automatic, &brute);
+  distances(nominal, true, points, SignMethod::automatic, &fast);
   CHECK(brute.queries == 500);
   CHECK(brute.triangles_tested == 500 * mesh.triangle_count());
   CHECK(brute.cells_visited == 0);
@@ -372,16 +365,15 @@ TEST_CASE("search statistics count queries, triangles and cells", "[distance]") 
 }
 
 TEST_CASE("progress is reported from the calling thread, ending at the total", "[distance]") {
-  const ncv::NominalSurface nominal(fx::torus(3, 1, 40, 20), "torus");
-  const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
-  const ncv::SearchIndex search(nominal.corners(), grid);
+  const ncv::IndexedReference nominal = ncv::index_reference(fx::torus(3, 1, 40, 20), "torus");
+  const ncv::SearchIndex search(nominal);
   std::mt19937_64 rng(71);
   std::vector<Vec3> points;
   for (int i = 0; i < 20000; ++i) points.push_back(fx::random_point(rng, {-5, -5, -2}, {5, 5, 2}));
   std::vector<std::pair<std::size_t, std::size_t>> calls;
   bool other_thread = false;
   const auto caller = std::this_thread::get_id();
-  ncv::compute_signed_distances(nominal, &search, points, {}, SignMethod::automatic, nullptr,
+  ncv::compute_signed_distances(search, points, {}, SignMethod::automatic, nullptr,
                                 [&](std::size_t done, std::size_t total) {
                                   other_thread |= std::this_thread::get_id() != caller;
                                   calls.emplace_back(done, total);
@@ -393,11 +385,11 @@ TEST_CASE("progress is reported from the calling thread, ending at the total", "
 }
 
 TEST_CASE("unusable query points are refused", "[distance]") {
-  const ncv::NominalSurface nominal(fx::box({0, 0, 0}, {1, 1, 1}), "box");
+  const ncv::IndexedReference nominal = ncv::index_reference(fx::box({0, 0, 0}, {1, 1, 1}), "box");
   for (Vec3 bad : {Vec3{std::nan(""), 0, 0}, Vec3{0, std::numeric_limits<double>::infinity(), 0},
                    Vec3{0, 0, 2e100}}) {
     const std::vector<Vec3> points = {{0.5, 0.5, 2}, bad};
-    CHECK_THROWS_AS(distances(nominal, nullptr, points, SignMethod::automatic), ncv::InputError);
+    CHECK_THROWS_AS(distances(nominal, false, points, SignMethod::automatic), ncv::InputError);
   }
-  CHECK(distances(nominal, nullptr, {}, SignMethod::automatic).distance.empty());
+  CHECK(distances(nominal, false, {}, SignMethod::automatic).distance.empty());
 }

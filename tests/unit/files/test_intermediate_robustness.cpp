@@ -88,8 +88,8 @@ TEST_CASE("a mesh hash of the wrong JSON type is bad input", "[intermediate-file
                          InputError, Catch::Message("x.samples: workpiece hash is malformed"));
     const ncv::Buffer<char> grid =
         sealed_container("GRID", meta_with_hash("nominal", "nominal", hash));
-    CHECK_THROWS_MATCHES(
-        load_nominal_grid(Container::parse(grid, "x.grid", FileKind::grid, kGridFormatVersion)),
-        InputError, Catch::Message("x.grid: nominal hash is malformed"));
+    CHECK_THROWS_MATCHES(load_indexed_reference(
+                             Container::parse(grid, "x.grid", FileKind::grid, kGridFormatVersion)),
+                         InputError, Catch::Message("x.grid: nominal hash is malformed"));
   }
 }

@@ -19,7 +19,7 @@ SampleSet example_set() {
             {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {4, 5, 6}}};
   SampleSet set = sample_mesh(std::move(mesh), 0.5, SamplingScheme::paper_ii);
   set.step_spec = "0.5";
-  set.workpiece_source = "example.stl";
+  set.source = "example.stl";
   return set;
 }
 
@@ -57,12 +57,12 @@ TEST_CASE("a samples file round-trips exactly", "[samples-file]") {
   const SampleSet set = example_set();
   REQUIRE(set.lattice_sizes[4] == 0);  // the tiny triangle is skipped in scheme II
   const SampleSet back = read_samples_file(write_example(dir, set, "round.samples").string());
-  CHECK(back.workpiece.vertices == set.workpiece.vertices);
-  CHECK(back.workpiece.triangles == set.workpiece.triangles);
-  CHECK(back.workpiece_hash == set.workpiece_hash);
+  CHECK(back.mesh.vertices == set.mesh.vertices);
+  CHECK(back.mesh.triangles == set.mesh.triangles);
+  CHECK(back.mesh_hash == set.mesh_hash);
   CHECK(back.step == set.step);
   CHECK(back.step_spec == "0.5");
-  CHECK(back.workpiece_source == "example.stl");
+  CHECK(back.source == "example.stl");
   CHECK(back.scheme == SamplingScheme::paper_ii);
   CHECK(back.lattice_sizes == set.lattice_sizes);
   CHECK(back.first_interior_sample == set.first_interior_sample);

@@ -115,7 +115,7 @@ TEST_CASE("the stops reproduce every map", "[color]") {
        {ColorMapKind::tolerance, ColorMapKind::diverging, ColorMapKind::turbo}) {
     const ColorMap map = make_color_map(kind, {-0.3, 0.5}, zone);
     const std::vector<ncv::ColorStop> stops = map.stops();
-    INFO(to_string(kind));
+    INFO(ncv::name_of(ncv::kColorMapNames, kind));
     REQUIRE(stops.size() >= 2);
     CHECK(stops.front().value == -0.3);
     CHECK(stops.back().value == 0.5);
@@ -132,10 +132,10 @@ TEST_CASE("the stops reproduce every map", "[color]") {
 }
 
 TEST_CASE("colour map names parse and describe", "[color]") {
-  CHECK(ncv::parse_color_map_kind("turbo") == ColorMapKind::turbo);
-  CHECK(ncv::parse_color_map_kind("diverging") == ColorMapKind::diverging);
-  CHECK(ncv::parse_color_map_kind("tolerance") == ColorMapKind::tolerance);
-  CHECK_THROWS_WITH(ncv::parse_color_map_kind("jet"), Catch::Contains("'jet'"));
+  CHECK(ncv::parse_name(ncv::kColorMapNames, "turbo") == ColorMapKind::turbo);
+  CHECK(ncv::parse_name(ncv::kColorMapNames, "diverging") == ColorMapKind::diverging);
+  CHECK(ncv::parse_name(ncv::kColorMapNames, "tolerance") == ColorMapKind::tolerance);
+  CHECK_FALSE(ncv::parse_name(ncv::kColorMapNames, "jet").has_value());
   const ColorMap map =
       make_color_map(ColorMapKind::tolerance, {-0.3, 0.5}, ncv::Tolerance{-0.05, 0.1});
   CHECK(map.description() == "colour map tolerance over -0.3:0.5, tolerance -0.05:0.1");

@@ -44,13 +44,13 @@ bool clipping_overlap(Vec3 centre, Vec3 half, Vec3 a, Vec3 b, Vec3 c) {
   return true;
 }
 
-ncv::NominalSurface nominal_of(ncv::Mesh mesh) {
-  return ncv::NominalSurface(std::move(mesh), "test");
+ncv::ReferenceSurface nominal_of(ncv::Mesh mesh) {
+  return ncv::ReferenceSurface(std::move(mesh), "test");
 }
 
 // Every cell the triangle touches (exact test on the cell's own bounds) lists it, every
 // list is strictly ascending, and nothing is listed in a cell it does not come near.
-void check_lists_complete(const ncv::NominalSurface& nominal, const ncv::BackgroundGrid& grid) {
+void check_lists_complete(const ncv::ReferenceSurface& nominal, const ncv::BackgroundGrid& grid) {
   const double h = grid.cell_size;
   const Vec3 half{0.5 * h, 0.5 * h, 0.5 * h};
   const Vec3 grown{0.5 * h * (1 + 1e-6), 0.5 * h * (1 + 1e-6), 0.5 * h * (1 + 1e-6)};
@@ -132,7 +132,7 @@ TEST_CASE("grid lists every triangle in every cell it touches", "[grid]") {
   std::mt19937_64 rng(5);
   SECTION("random soup") {
     const auto nominal = nominal_of(fx::random_soup(rng, 300, 0.2));
-    const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
+    const ncv::BackgroundGrid grid = ncv::build_background_grid(nominal);
     grid.validate(nominal, "built");
     check_lists_complete(nominal, grid);
   }
@@ -142,7 +142,7 @@ TEST_CASE("grid lists every triangle in every cell it touches", "[grid]") {
     ncv::GridOptions options;
     options.cell_size = 0.5;
     ncv::GridStatistics stats;
-    const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal, options, &stats);
+    const ncv::BackgroundGrid grid = ncv::build_background_grid(nominal, options, &stats);
     CHECK(stats.growth_steps == 0);
     CHECK(grid.cell_size == 0.5);
     check_lists_complete(nominal, grid);
@@ -157,14 +157,14 @@ TEST_CASE("grid lists every triangle in every cell it touches", "[grid]") {
     const auto nominal = nominal_of(std::move(mesh));
     ncv::GridOptions options;
     options.cell_size = 0.1;
-    check_lists_complete(nominal, ncv::build_uniform_grid(nominal, options));
+    check_lists_complete(nominal, ncv::build_background_grid(nominal, options));
   }
 }
 
 TEST_CASE("grid statistics describe the grid", "[grid]") {
   const auto nominal = nominal_of(fx::torus(2, 0.5, 40, 20));
   ncv::GridStatistics stats;
-  const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal, {}, &stats);
+  const ncv::BackgroundGrid grid = ncv::build_background_grid(nominal, {}, &stats);
   CHECK(stats.dims == grid.dims);
   CHECK(stats.cells == grid.cell_count());
   CHECK(stats.references == grid.cell_triangles.size());
@@ -203,7 +203,7 @@ TEST_CASE("grid memory stays bounded for huge triangles among tiny ones", "[grid
     mesh.triangles.push_back({base, base + 3, base + 4});
     const auto nominal = nominal_of(std::move(mesh));
     ncv::GridStatistics stats;
-    const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal, {}, &stats);
+    const ncv::BackgroundGrid grid = ncv::build_background_grid(nominal, {}, &stats);
     const std::uint64_t t = nominal.triangle_count();
     CHECK(stats.cells <= ncv::kCellsPerTriangle * t);
     CHECK(stats.references <= ncv::kReferencesPerTriangle * t);
@@ -224,7 +224,7 @@ TEST_CASE("grid memory stays bounded for huge triangles among tiny ones", "[grid
     ncv::GridOptions options;
     options.cell_size = 1e-4;  // absurdly small: both bounds must step in
     ncv::GridStatistics stats;
-    const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal, options, &stats);
+    const ncv::BackgroundGrid grid = ncv::build_background_grid(nominal, options, &stats);
     CHECK(stats.cells <= ncv::kMinCellBudget);
     CHECK(stats.references <= ncv::kMinReferenceBudget);
     CHECK(stats.references > ncv::kMinReferenceBudget / 4);  // not grown far beyond need
@@ -237,7 +237,7 @@ TEST_CASE("grid build does not depend on the thread count", "[grid]") {
   const auto nominal = nominal_of(fx::random_soup(rng, 5000, 0.1));
   const auto build_with = [&](int threads) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    return ncv::build_uniform_grid(nominal);
+    return ncv::build_background_grid(nominal);
   };
   const ncv::BackgroundGrid one = build_with(1);
   const ncv::BackgroundGrid two = build_with(2);
@@ -249,12 +249,12 @@ TEST_CASE("grid build does not depend on the thread count", "[grid]") {
 }
 
 TEST_CASE("a cell size far below the part's size grows without overflow", "[grid]") {
-  const ncv::NominalSurface nominal(fx::box({0, 0, 0}, {1e90, 1e90, 1e90}), "huge");
+  const ncv::ReferenceSurface nominal(fx::box({0, 0, 0}, {1e90, 1e90, 1e90}), "huge");
   for (double tiny : {1e-300, 5e-324, 1.0}) {
     ncv::GridOptions options;
     options.cell_size = tiny;
     ncv::GridStatistics stats;
-    const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal, options, &stats);
+    const ncv::BackgroundGrid grid = ncv::build_background_grid(nominal, options, &stats);
     CHECK(stats.cells <= ncv::kMinCellBudget);
     CHECK(std::isfinite(grid.cell_size));
     grid.validate(nominal, "built");
@@ -266,14 +266,14 @@ TEST_CASE("grid options are checked", "[grid]") {
   for (double bad : {-1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
     ncv::GridOptions options;
     options.cell_size = bad;
-    CHECK_THROWS_AS(ncv::build_uniform_grid(nominal, options), ncv::UsageError);
+    CHECK_THROWS_AS(ncv::build_background_grid(nominal, options), ncv::UsageError);
   }
 }
 
 TEST_CASE("grid validation rejects every kind of corruption", "[grid]") {
   std::mt19937_64 rng(2);
   const auto nominal = nominal_of(fx::random_soup(rng, 200, 0.2));
-  const ncv::BackgroundGrid good = ncv::build_uniform_grid(nominal);
+  const ncv::BackgroundGrid good = ncv::build_background_grid(nominal);
   REQUIRE_NOTHROW(good.validate(nominal, "grid.bin"));
   REQUIRE(good.cell_triangles.size() > 2);
 

@@ -112,8 +112,8 @@ TEST_CASE("box lanes: the filter is switched off outside float's safe range", "[
 }
 
 TEST_CASE("reference boxes: block r / 4, lane r % 4 holds reference r's box", "[search]") {
-  const ncv::NominalSurface nominal(ncv::fixtures::torus(40, 10, 60, 30), "torus");
-  const ncv::BackgroundGrid grid = ncv::build_uniform_grid(nominal);
+  const ncv::ReferenceSurface nominal(ncv::fixtures::torus(40, 10, 60, 30), "torus");
+  const ncv::BackgroundGrid grid = ncv::build_background_grid(nominal);
   const ncv::Buffer<BoxBlock> blocks = ncv::build_reference_boxes(nominal.corners(), grid);
   const std::size_t references = grid.cell_triangles.size();
   REQUIRE(blocks.size() == (references + kBoxLanes - 1) / kBoxLanes);

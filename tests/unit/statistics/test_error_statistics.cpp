@@ -85,7 +85,7 @@ struct Reference {
 Reference reference_measures(const SampleSet& samples, const std::vector<double>& d,
                              const Tolerance& zone) {
   Reference ref;
-  const ncv::Mesh& mesh = samples.workpiece;
+  const ncv::Mesh& mesh = samples.mesh;
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     const std::uint32_t n = samples.lattice_sizes[t];
     if (n < 2) continue;
@@ -293,7 +293,7 @@ TEST_CASE("the measures match a plain sub-triangle by sub-triangle recomputation
   const Reference ref = reference_measures(samples, d, zone);
   const ErrorStatistics stats = compute_error_statistics(samples, d, zone);
   CHECK(stats.sampled_area == Approx(ref.area).epsilon(1e-12));
-  CHECK(stats.workpiece_area == Approx(ncv::surface_area(samples.workpiece)).epsilon(1e-14));
+  CHECK(stats.workpiece_area == Approx(ncv::surface_area(samples.mesh)).epsilon(1e-14));
   CHECK(stats.mean == Approx(ref.integral / ref.area).epsilon(1e-11));
   CHECK(stats.rms == Approx(std::sqrt(ref.squares / ref.area)).epsilon(1e-11));
   const double mean = ref.integral / ref.area;

@@ -14,14 +14,14 @@ DistanceSet linear_field_part() {
   Mesh square{{{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {10, 10, 0}}, {{0, 1, 2}, {3, 2, 1}}};
   DistanceSet set;
   set.samples = sample_mesh(std::move(square), 0.5, SamplingScheme::all);
-  set.samples.workpiece_source = "parts/plate.stl";
+  set.samples.source = "parts/plate.stl";
   set.samples.step_spec = "0.5";
   for (const Vec3& p : set.samples.positions) {
     set.field.distance.push_back(p[0] / 10 - 0.2);
     set.field.closest_point.push_back({p[0], p[1], 0});
     set.field.closest_face.push_back(0);
   }
-  set.nominal = {"plate_nominal.stl", 42, 2, {}};
+  set.reference = {"plate_nominal.stl", 42, 2, {}};
   set.sign_method = "pseudonormal";
   set.search = "grid";
   return set;

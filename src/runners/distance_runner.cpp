@@ -1,11 +1,14 @@
-#include "steps/distance_step.hpp"
+#include "runners/distance_runner.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
 
+#include "files/grid_file.hpp"
+#include "files/samples_file.hpp"
 #include "sampling/sample_normals.hpp"
+#include "search/search_index.hpp"
 #include "util/error.hpp"
 #include "util/progress.hpp"
 #include "util/stopwatch.hpp"
@@ -35,20 +38,20 @@ double overlap_share(const BoundingBox& a, const BoundingBox& b) {
 // refused. Only suspicious (warned, measured anyway): little overlap, no overlap at close
 // range, very different sizes, or the nominal itself given as the workpiece (zero
 // everywhere; a legitimate self-check, a mix-up otherwise).
-void check_belong_together(const SampleSet& samples, const PreparedNominal& grid) {
-  const BoundingBox workpiece = bounding_box(samples.workpiece);
+void check_belong_together(const SampleSet& samples, const IndexedReference& grid) {
+  const BoundingBox workpiece = bounding_box(samples.mesh);
   const BoundingBox nominal = bounding_box(grid.mesh);
-  refuse_if_apart(workpiece, samples.workpiece_source, nominal, grid.nominal_source);
-  if (samples.workpiece_hash == grid.nominal_hash) {
+  refuse_if_apart(workpiece, samples.source, nominal, grid.source);
+  if (samples.mesh_hash == grid.hash) {
     spdlog::warn("the workpiece ({}) is the nominal ({}) itself: every distance is zero",
-                 samples.workpiece_source, grid.nominal_source);
+                 samples.source, grid.source);
   }
   const double share = overlap_share(workpiece, nominal);
   if (share < 0.5) {
     spdlog::warn(
         "the workpiece ({}) and the nominal ({}) barely overlap ({:.0f} % of the "
         "smaller bounding box): a wrong file, unit or coordinate frame?",
-        samples.workpiece_source, grid.nominal_source, 100 * share);
+        samples.source, grid.source, 100 * share);
   }
   const double ratio = workpiece.diagonal() / std::max(nominal.diagonal(), 1e-300);
   if (ratio > 5 || ratio < 0.2) {
@@ -71,40 +74,60 @@ void refuse_if_apart(const BoundingBox& workpiece, const std::string& workpiece_
   }
 }
 
-DistanceSet measure_distances(SampleSet samples, const PreparedNominal& grid,
-                              const SearchIndex& search, const DistanceStepOptions& options,
-                              double* seconds) {
-  check_belong_together(samples, grid);
-  const SignMethod method = resolve_sign_method(*grid.nominal, options.sign);
+DistanceSet measure_distances(SampleSet samples, const IndexedReference& reference,
+                              const DistanceOptions& options, double* seconds) {
+  check_belong_together(samples, reference);
+  const ReferenceSurface& surface = *reference.surface;
+  const SignMethod method = resolve_sign_method(surface, options.sign);
   const std::vector<Vec3> normals =
       method == SignMethod::paper ? sample_normals(samples) : std::vector<Vec3>{};
 
   Stopwatch clock;
   SearchStatistics statistics;
   Progress progress("distance", samples.sample_count());
+  const auto report = [&](std::size_t done, std::size_t) { progress.update(done); };
   DistanceSet result;
-  result.field = compute_signed_distances(
-      *grid.nominal, options.brute_force ? nullptr : &search, samples.positions, normals, method,
-      &statistics, [&](std::size_t done, std::size_t) { progress.update(done); });
+  if (options.brute_force) {
+    result.field =
+        compute_signed_distances(surface, samples.positions, normals, method, &statistics, report);
+  } else {
+    const SearchIndex index(reference);
+    result.field =
+        compute_signed_distances(index, samples.positions, normals, method, &statistics, report);
+  }
   progress.finish();
   if (seconds) *seconds = clock.seconds();
 
   result.samples = std::move(samples);
-  result.nominal = {grid.nominal_source, grid.nominal_hash, grid.mesh.triangle_count(),
-                    bounding_box(grid.mesh)};
-  result.sign_method = std::string(sign_method_name(method));
+  result.reference = {reference.source, reference.hash, reference.mesh.triangle_count(),
+                      bounding_box(reference.mesh)};
+  result.sign_method = std::string(name_of(kSignMethodNames, method));
   result.search = options.brute_force ? "brute-force" : "grid";
   result.triangles_tested_per_sample = statistics.triangles_per_query();
   return result;
 }
 
-void log_distance_report(const DistanceSet& d, double seconds) {
+void log_distances(const DistanceSet& d, double seconds) {
   const auto samples = static_cast<double>(d.samples.sample_count());
   spdlog::info(
       "{} samples against {} nominal triangles in {:.3f} s ({:.3g} samples/s); {} "
       "search, {:.1f} triangles tested per sample; sign by {}",
-      d.samples.sample_count(), d.nominal.triangles, seconds, samples / std::max(seconds, 1e-9),
+      d.samples.sample_count(), d.reference.triangles, seconds, samples / std::max(seconds, 1e-9),
       d.search, d.triangles_tested_per_sample, d.sign_method);
+}
+
+// Output opened first and the report after the commit, as in `sample`.
+void run_distance(const DistanceJob& job) {
+  OutputFile out(job.output, OutputKind::binary);
+  SampleSet samples = read_samples_file(job.samples);
+  const IndexedReference reference = read_grid_file(job.grid);
+  double seconds = 0;
+  const DistanceSet result =
+      measure_distances(std::move(samples), reference, job.options, &seconds);
+  write_distance_file(result, out);
+  out.commit();
+  log_distances(result, seconds);
+  spdlog::info("wrote {}", out.display_name());
 }
 
 }  // namespace ncv

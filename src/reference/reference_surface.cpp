@@ -1,4 +1,4 @@
-#include "nominal/nominal_surface.hpp"
+#include "reference/reference_surface.hpp"
 
 #include <algorithm>
 #include <array>
@@ -17,9 +17,9 @@ namespace {
 
 void check_usable(const Mesh& mesh, const std::string& source) {
   if (mesh.triangle_count() == 0) throw InputError(source, "the nominal mesh has no triangles");
-  if (mesh.triangle_count() > kMaxNominalTriangles) {
+  if (mesh.triangle_count() > kMaxReferenceTriangles) {
     throw InputError(source, fmt::format("the nominal mesh has {} triangles, more than {}",
-                                         mesh.triangle_count(), kMaxNominalTriangles));
+                                         mesh.triangle_count(), kMaxReferenceTriangles));
   }
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
     const Vec3 p = mesh.vertices[v];
@@ -78,7 +78,7 @@ void normalize_all(std::vector<Vec3>& vectors) {
 
 }  // namespace
 
-NominalSurface::NominalSurface(Mesh mesh, const std::string& source) {
+ReferenceSurface::ReferenceSurface(Mesh mesh, const std::string& source) {
   check_usable(mesh, source);
   origin_ = bounding_box(mesh).center();
   local_ = std::move(mesh);
@@ -102,7 +102,7 @@ NominalSurface::NominalSurface(Mesh mesh, const std::string& source) {
 
 // Into an uninitialised buffer, in parallel: zero-filling 72 bytes per triangle first, on
 // one thread, took as long as the copy (a 968 k-triangle nominal: 54 ms).
-void NominalSurface::copy_corners() {
+void ReferenceSurface::copy_corners() {
   corners_.resize(local_.triangle_count());
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, corners_.size(), 1 << 14),
@@ -113,7 +113,7 @@ void NominalSurface::copy_corners() {
       });
 }
 
-void NominalSurface::orient_outward(const std::string& source) {
+void ReferenceSurface::orient_outward(const std::string& source) {
   if (!(topology_.signed_volume < -volume_tolerance(local_bounds_))) return;
   for (Triangle& t : local_.triangles) std::swap(t[1], t[2]);
   flipped_ = true;
@@ -121,7 +121,7 @@ void NominalSurface::orient_outward(const std::string& source) {
                source, topology_.signed_volume);
 }
 
-void NominalSurface::choose_sign_method(const std::string& source) {
+void ReferenceSurface::choose_sign_method(const std::string& source) {
   winding_reason_ = describe_defects(topology_, volume_tolerance(local_bounds_));
   if (winding_reason_.empty()) return;
   automatic_sign_ = SignMethod::winding;
@@ -131,7 +131,7 @@ void NominalSurface::choose_sign_method(const std::string& source) {
       source, winding_reason_);
 }
 
-void NominalSurface::compute_normals(const EdgeIncidence& incidence) {
+void ReferenceSurface::compute_normals(const EdgeIncidence& incidence) {
   const std::size_t triangles = local_.triangle_count();
   face_normals_.resize(triangles);
   vertex_normals_.assign(local_.vertex_count(), Vec3(0, 0, 0));
@@ -169,7 +169,7 @@ void NominalSurface::compute_normals(const EdgeIncidence& incidence) {
   normalize_all(edge_normals_);
 }
 
-Vec3 NominalSurface::pseudonormal(std::size_t triangle, TriangleFeature feature) const {
+Vec3 ReferenceSurface::pseudonormal(std::size_t triangle, TriangleFeature feature) const {
   if (is_vertex(feature)) {
     return vertex_normals_[local_.triangles[triangle][vertex_index(feature)]];
   }

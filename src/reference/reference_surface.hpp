@@ -32,19 +32,19 @@
 #include "geometry/coordinate_limit.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/mesh_topology.hpp"
-#include "nominal/sign_method.hpp"
+#include "reference/sign_method.hpp"
 #include "util/buffer.hpp"
 
 namespace ncv {
 
 // Keeps slot indices (3 per triangle) and grid cell indices (<= 4 per triangle) in 32 bits.
-inline constexpr std::size_t kMaxNominalTriangles = std::size_t{1} << 28;
+inline constexpr std::size_t kMaxReferenceTriangles = std::size_t{1} << 28;
 
-class NominalSurface {
+class ReferenceSurface {
  public:
   // Throws InputError(source, ...) for a mesh that cannot be used: no triangles, too many,
   // a vertex index out of range, a non-finite or absurdly large coordinate.
-  NominalSurface(Mesh mesh, const std::string& source);
+  ReferenceSurface(Mesh mesh, const std::string& source);
 
   std::size_t triangle_count() const { return corners_.size(); }
   Vec3 origin() const { return origin_; }

@@ -5,8 +5,8 @@
 #include <numbers>
 #include <random>
 
-#include "nominal/winding_number.hpp"
 #include "nominal_fixtures.hpp"
+#include "reference/winding_number.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "nominal/winding_number.hpp"
+#include "reference/winding_number.hpp"
 
 #include <algorithm>
 #include <cmath>

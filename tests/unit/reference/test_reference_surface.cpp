@@ -6,8 +6,8 @@
 
 #include <tbb/global_control.h>
 
-#include "nominal/nominal_surface.hpp"
 #include "nominal_fixtures.hpp"
+#include "reference/reference_surface.hpp"
 #include "util/error.hpp"
 
 namespace {
@@ -23,7 +23,7 @@ bool near(Vec3 a, Vec3 b, double tolerance = 1e-12) {
 
 TEST_CASE("nominal: local frame at the bounding-box centre", "[nominal]") {
   const ncv::Mesh mesh = fx::box({1e6, 2, 3}, {1e6 + 4, 6, 5});
-  const ncv::NominalSurface nominal(mesh, "part.stl");
+  const ncv::ReferenceSurface nominal(mesh, "part.stl");
   CHECK(nominal.origin() == Vec3{1e6 + 2, 4, 4});
   CHECK(nominal.local_bounds().min == Vec3{-2, -2, -1});
   CHECK(nominal.local_bounds().max == Vec3{2, 2, 1});
@@ -39,7 +39,7 @@ TEST_CASE("nominal: local frame at the bounding-box centre", "[nominal]") {
 TEST_CASE("nominal: unusable meshes are refused with the file name", "[nominal]") {
   const auto refuses = [](ncv::Mesh mesh, const char* fragment) {
     try {
-      ncv::NominalSurface nominal(std::move(mesh), "cad.stl");
+      ncv::ReferenceSurface nominal(std::move(mesh), "cad.stl");
       FAIL("accepted a mesh that " << fragment);
     } catch (const ncv::InputError& e) {
       const std::string message = e.what();
@@ -64,7 +64,7 @@ TEST_CASE("nominal: face normals and pseudonormals of a box", "[nominal]") {
   // must still give the symmetric corner normal.
   fx::VoxelSolid cube;
   cube.fill(0, 0, 0, 2, 2, 2);
-  const ncv::NominalSurface nominal(cube.mesh(1.0), "box");
+  const ncv::ReferenceSurface nominal(cube.mesh(1.0), "box");
   const ncv::Mesh& mesh = nominal.local_mesh();
   const Vec3 diagonal = ncv::normalized({1, 1, 1});
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
@@ -104,7 +104,7 @@ TEST_CASE("nominal: degenerate faces contribute no normal", "[nominal]") {
   mesh.triangles[4] = {0, m, 4};
   mesh.triangles.push_back({m, 1, 4});
   mesh.triangles.push_back({0, 1, m});
-  const ncv::NominalSurface nominal(mesh, "cracked");
+  const ncv::ReferenceSurface nominal(mesh, "cracked");
   CHECK(nominal.automatic_sign_method() == ncv::SignMethod::pseudonormal);
   CHECK(nominal.face_normal(13) == Vec3(0, 0, 0));
   // At m the degenerate triangle has the largest angle (pi) but no say.
@@ -115,14 +115,14 @@ TEST_CASE("nominal: degenerate faces contribute no normal", "[nominal]") {
 
 TEST_CASE("nominal: orientation and the automatic sign method", "[nominal]") {
   SECTION("closed and outward: pseudonormal") {
-    const ncv::NominalSurface nominal(fx::pocketed_block().mesh(1.0), "ok");
+    const ncv::ReferenceSurface nominal(fx::pocketed_block().mesh(1.0), "ok");
     CHECK_FALSE(nominal.flipped());
     CHECK(nominal.automatic_sign_method() == ncv::SignMethod::pseudonormal);
     CHECK(nominal.winding_reason().empty());
   }
   SECTION("closed and inward: flipped, then pseudonormal") {
     const ncv::Mesh inward = fx::flipped(fx::pocketed_block().mesh(1.0));
-    const ncv::NominalSurface nominal(inward, "inward");
+    const ncv::ReferenceSurface nominal(inward, "inward");
     CHECK(nominal.flipped());
     CHECK(nominal.topology().signed_volume < 0);
     CHECK(nominal.automatic_sign_method() == ncv::SignMethod::pseudonormal);
@@ -132,7 +132,7 @@ TEST_CASE("nominal: orientation and the automatic sign method", "[nominal]") {
             ncv::Triangle{original[0], original[2], original[1]});
     }
     // Normals point out again: the top face (z = 2) has +z.
-    const ncv::NominalSurface outward(fx::pocketed_block().mesh(1.0), "outward");
+    const ncv::ReferenceSurface outward(fx::pocketed_block().mesh(1.0), "outward");
     for (std::size_t t = 0; t < inward.triangle_count(); ++t) {
       CHECK(near(nominal.face_normal(t), outward.face_normal(t)));
       for (int k = 0; k < 3; ++k) {
@@ -153,14 +153,14 @@ TEST_CASE("nominal: orientation and the automatic sign method", "[nominal]") {
   SECTION("open: winding, and says why") {
     ncv::Mesh mesh = fx::box({0, 0, 0}, {1, 1, 1});
     mesh.triangles.resize(10);
-    const ncv::NominalSurface nominal(mesh, "open");
+    const ncv::ReferenceSurface nominal(mesh, "open");
     CHECK(nominal.automatic_sign_method() == ncv::SignMethod::winding);
     CHECK(nominal.winding_reason().find("boundary") != std::string::npos);
   }
   SECTION("non-manifold: winding") {
     ncv::Mesh mesh = fx::box({0, 0, 0}, {1, 1, 1});
     mesh.triangles.push_back(mesh.triangles[0]);
-    const ncv::NominalSurface nominal(mesh, "doubled");
+    const ncv::ReferenceSurface nominal(mesh, "doubled");
     CHECK(nominal.automatic_sign_method() == ncv::SignMethod::winding);
     CHECK(nominal.winding_reason().find("more than two") != std::string::npos);
   }
@@ -168,7 +168,7 @@ TEST_CASE("nominal: orientation and the automatic sign method", "[nominal]") {
     ncv::Mesh sheet;
     sheet.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     sheet.triangles = {{0, 1, 2}, {0, 2, 1}};
-    const ncv::NominalSurface nominal(sheet, "sheet");
+    const ncv::ReferenceSurface nominal(sheet, "sheet");
     CHECK_FALSE(nominal.flipped());
     CHECK(nominal.topology().closed());
     CHECK(nominal.automatic_sign_method() == ncv::SignMethod::winding);
@@ -179,10 +179,11 @@ TEST_CASE("nominal: orientation and the automatic sign method", "[nominal]") {
 TEST_CASE("sign method names round-trip", "[nominal]") {
   for (ncv::SignMethod m : {ncv::SignMethod::automatic, ncv::SignMethod::pseudonormal,
                             ncv::SignMethod::winding, ncv::SignMethod::paper}) {
-    CHECK(ncv::parse_sign_method(ncv::sign_method_name(m)) == m);
+    CHECK(ncv::parse_name(ncv::kSignMethodNames, ncv::name_of(ncv::kSignMethodNames, m)) == m);
   }
-  CHECK_FALSE(ncv::parse_sign_method("normal").has_value());
-  CHECK(ncv::sign_method_name(static_cast<ncv::SignMethod>(9)) == "unknown");
+  CHECK(ncv::name_of(ncv::kSignMethodNames, ncv::SignMethod::automatic) == "auto");
+  CHECK_FALSE(ncv::parse_name(ncv::kSignMethodNames, "normal").has_value());
+  CHECK(ncv::name_of(ncv::kSignMethodNames, static_cast<ncv::SignMethod>(9)) == "unknown");
 }
 
 // Corners, face normals and the angle-weighted sums are built in parallel (the sums in
@@ -193,10 +194,10 @@ TEST_CASE("nominal: corners and pseudonormals do not depend on the thread count"
   REQUIRE(torus.triangle_count() > 3 * (1 << 14));
   const auto build = [&](std::size_t threads) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    return ncv::NominalSurface(torus, "torus");
+    return ncv::ReferenceSurface(torus, "torus");
   };
-  const ncv::NominalSurface one = build(1);
-  const ncv::NominalSurface two = build(2);
+  const ncv::ReferenceSurface one = build(1);
+  const ncv::ReferenceSurface two = build(2);
   const auto features = {ncv::TriangleFeature::face,    ncv::TriangleFeature::edge0,
                          ncv::TriangleFeature::edge1,   ncv::TriangleFeature::edge2,
                          ncv::TriangleFeature::vertex0, ncv::TriangleFeature::vertex1,

@@ -1,0 +1,25 @@
+// The options several subcommands share, each declared once into its runner's typed struct.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <optional>
+
+#include "runners/colorize_runner.hpp"
+#include "runners/distance_runner.hpp"
+#include "runners/grid_runner.hpp"
+#include "runners/report_runner.hpp"
+#include "runners/sample_runner.hpp"
+
+namespace ncv::cmd {
+
+void add_sample_options(CLI::App& sub, SampleOptions& options);
+void add_grid_options(CLI::App& sub, GridOptions& options);
+void add_distance_options(CLI::App& sub, DistanceOptions& options);
+void add_tolerance_option(CLI::App& sub, std::optional<Tolerance>& tolerance,
+                          const std::string& description);
+// --bins, --histogram-range, --regions (the tolerance is declared apart).
+void add_report_options(CLI::App& sub, ReportOptions& options);
+// --map, --range, --refine (the tolerance is declared apart).
+void add_colorize_options(CLI::App& sub, ColorizeOptions& options);
+
+}  // namespace ncv::cmd

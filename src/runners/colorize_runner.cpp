@@ -1,0 +1,86 @@
+#include "runners/colorize_runner.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "render/ply_writer.hpp"
+#include "render/svg_legend.hpp"
+#include "util/error.hpp"
+#include "util/output_file.hpp"
+
+namespace ncv {
+namespace {
+
+// Without a range: for the tolerance map the data's extent (at least the zone), so the
+// deepest shade marks the worst point; for the continuous maps ±max|d|, so zero is the
+// neutral colour.
+ValueRange default_range(const DistanceSet& distances, ColorMapKind kind,
+                         const std::optional<Tolerance>& tolerance) {
+  const auto [lo, hi] =
+      std::minmax_element(distances.field.distance.begin(), distances.field.distance.end());
+  if (kind == ColorMapKind::tolerance) {
+    return {std::min(*lo, tolerance->lower), std::max(*hi, tolerance->upper)};
+  }
+  const double reach = std::max({std::abs(*lo), std::abs(*hi), 1e-12});
+  return {-reach, reach};
+}
+
+}  // namespace
+
+ColorMap choose_color_map(const DistanceSet& distances, const ColorizeOptions& options) {
+  const ColorMapKind kind =
+      options.map.value_or(options.tolerance ? ColorMapKind::tolerance : ColorMapKind::diverging);
+  if (kind == ColorMapKind::tolerance && !options.tolerance) {
+    throw UsageError("the tolerance colour map needs a tolerance: give --tol");
+  }
+  const ValueRange range =
+      options.range.value_or(default_range(distances, kind, options.tolerance));
+  return make_color_map(kind, range, options.tolerance);
+}
+
+ColoredSurface colorize(const DistanceSet& distances, const ColorizeOptions& options) {
+  return {choose_color_map(distances, options),
+          options.lattice ? lattice_error_mesh(distances.samples, distances.field.distance)
+                          : workpiece_error_mesh(distances.samples, distances.field.distance)};
+}
+
+Buffer<char> colored_ply(const ColoredSurface& colored, const DistanceSet& distances) {
+  const std::string comments[] = {"ncverify " NCV_VERSION " signed error of " +
+                                      distances.samples.source + " against " +
+                                      distances.reference.source,
+                                  "positive = excess material, negative = gouge"};
+  return error_ply(colored.mesh, colored.map, comments);
+}
+
+std::string legend_svg(const ColoredSurface& colored) {
+  std::ostringstream svg;
+  write_legend_svg(svg, colored.map, "model units");
+  return svg.str();
+}
+
+void write_colored(const DistanceSet& distances, const ColorizeOptions& options,
+                   const std::string& ply_path, const std::string& legend_path) {
+  const ColoredSurface colored = colorize(distances, options);
+  const Buffer<char> ply = colored_ply(colored, distances);
+  OutputFile out(ply_path, OutputKind::binary);
+  std::optional<OutputFile> legend;
+  if (!legend_path.empty()) {
+    legend.emplace(legend_path, OutputKind::text);
+    legend->write(legend_svg(colored));
+  }
+  out.write(ply.data(), ply.size());
+  out.commit();
+  if (legend) legend->commit();
+  spdlog::info("wrote {} ({} vertices, {} faces, {})", out.display_name(),
+               colored.mesh.mesh.vertex_count(), colored.mesh.mesh.triangle_count(),
+               colored.map.description());
+}
+
+void run_colorize(const ColorizeJob& job) {
+  write_colored(read_distance_file(job.distances), job.options, job.output, job.legend_svg);
+}
+
+}  // namespace ncv

@@ -1,0 +1,50 @@
+// The colorize step (`ncverify colorize`, and run's colorize phase): the sampled surface
+// painted by its error as a binary PLY for MeshLab and CloudCompare, and the colour bar as SVG
+// (docs/METHOD.md "Colouring").
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "files/distance_file.hpp"
+#include "render/color_map.hpp"
+#include "render/error_mesh.hpp"
+#include "statistics/tolerance.hpp"
+#include "statistics/value_range.hpp"
+#include "util/buffer.hpp"
+
+namespace ncv {
+
+struct ColorizeOptions {
+  std::optional<Tolerance> tolerance;  // marks the zone; selects the tolerance map by default
+  std::optional<ColorMapKind> map;     // default: tolerance with a tolerance, else diverging
+  std::optional<ValueRange> range;     // default: from the data (see choose_color_map)
+  bool lattice = false;                // the sampling lattice as the mesh: every sample shows
+};
+
+// Throws UsageError for the tolerance map without a tolerance.
+ColorMap choose_color_map(const DistanceSet& distances, const ColorizeOptions& options);
+
+struct ColoredSurface {
+  ColorMap map;
+  ErrorMesh mesh;
+};
+ColoredSurface colorize(const DistanceSet& distances, const ColorizeOptions& options);
+Buffer<char> colored_ply(const ColoredSurface& colored, const DistanceSet& distances);
+std::string legend_svg(const ColoredSurface& colored);
+
+// Writes the PLY (and the legend when `legend_svg` is not empty); both are opened before
+// either is committed, so a legend path that cannot be written leaves no PLY either.
+void write_colored(const DistanceSet& distances, const ColorizeOptions& options,
+                   const std::string& ply_path, const std::string& legend_path);
+
+// `ncverify colorize DIST -o OUT.ply`.
+struct ColorizeJob {
+  std::string distances;
+  std::string output;
+  std::string legend_svg;  // empty: none
+  ColorizeOptions options;
+};
+void run_colorize(const ColorizeJob& job);
+
+}  // namespace ncv

@@ -1,0 +1,43 @@
+// The distance step (`ncverify distance`, and run's distance phase in each direction): every
+// sample's signed distance to the reference surface (docs/METHOD.md "Signed distance"), after
+// checking that the two belong together.
+#pragma once
+
+#include <string>
+
+#include "files/distance_file.hpp"
+#include "reference/sign_method.hpp"
+#include "sampling/sampling.hpp"
+#include "search/indexed_reference.hpp"
+
+namespace ncv {
+
+struct DistanceOptions {
+  SignMethod sign = SignMethod::automatic;
+  bool brute_force = false;  // test every reference triangle (the reference result), no grid
+};
+
+// Refuses (InputError naming the workpiece) a workpiece farther from the nominal than the
+// size of either part, from the two meshes' bounding boxes, so that `run` can refuse before
+// sampling.
+void refuse_if_apart(const BoundingBox& workpiece, const std::string& workpiece_source,
+                     const BoundingBox& nominal, const std::string& nominal_source);
+
+// The same refusal; then warns when they barely overlap, differ in size five times or are
+// the same mesh (a wrong file, unit or frame?), then measures every sample; `seconds`
+// receives the time the measuring took.
+DistanceSet measure_distances(SampleSet samples, const IndexedReference& reference,
+                              const DistanceOptions& options, double* seconds = nullptr);
+// Samples per second, triangles tested per sample and the sign method, on stderr.
+void log_distances(const DistanceSet& distances, double seconds);
+
+// `ncverify distance SAMPLES GRID -o OUT`.
+struct DistanceJob {
+  std::string samples;
+  std::string grid;
+  std::string output;
+  DistanceOptions options;
+};
+void run_distance(const DistanceJob& job);
+
+}  // namespace ncv

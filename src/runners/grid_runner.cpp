@@ -1,0 +1,54 @@
+#include "runners/grid_runner.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include "files/grid_file.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "util/input_bytes.hpp"
+#include "util/memory_guard.hpp"
+#include "util/stopwatch.hpp"
+
+namespace ncv {
+
+IndexedSurface index_surface(Mesh mesh, const std::string& source, const GridOptions& options) {
+  Stopwatch clock;
+  IndexedSurface indexed;
+  indexed.reference = index_reference(std::move(mesh), source, options, &indexed.statistics);
+  indexed.seconds = clock.seconds();
+  return indexed;
+}
+
+void log_grid(const IndexedSurface& indexed) {
+  const IndexedReference& g = indexed.reference;
+  const GridStatistics& s = indexed.statistics;
+  const TopologyReport& t = g.surface->topology();
+  spdlog::info(
+      "{}: {} triangles, {} vertices; closed: {}, manifold: {}, consistently oriented: "
+      "{}; sign by {}",
+      g.source, g.mesh.triangle_count(), g.mesh.vertex_count(), t.closed() ? "yes" : "no",
+      t.manifold() ? "yes" : "no", t.consistently_oriented() ? "yes" : "no",
+      name_of(kSignMethodNames, g.surface->automatic_sign_method()));
+  spdlog::info(
+      "grid {}×{}×{} = {} cells of {} ({} empty), {} references ({:.2f} per triangle), "
+      "{}, built in {:.3f} s",
+      s.dims[0], s.dims[1], s.dims[2], s.cells, s.cell_size, s.empty_cells, s.references,
+      s.references_per_triangle, format_bytes(s.bytes), indexed.seconds);
+  if (s.growth_steps > 0) {
+    spdlog::info("cell size grown from {} to {} to keep memory bounded", s.requested_cell_size,
+                 s.cell_size);
+  }
+}
+
+// Output opened first and the report after the commit, as in `sample`.
+void run_grid_build(const GridJob& job) {
+  Stopwatch clock;
+  OutputFile out(job.output, OutputKind::binary);
+  IndexedSurface indexed = index_surface(read_mesh(job.mesh), input_name(job.mesh), job.options);
+  write_grid_file(indexed.reference, indexed.statistics, out);
+  out.commit();
+  indexed.seconds = clock.seconds();
+  log_grid(indexed);
+  spdlog::info("wrote {}", out.display_name());
+}
+
+}  // namespace ncv

@@ -1,0 +1,37 @@
+// `ncverify run WORKPIECE NOMINAL`: every step in one go (sample, grid, distance, report,
+// colorize), keeping each step's output in a folder, the report on standard output.
+#pragma once
+
+#include <string>
+
+#include "runners/colorize_runner.hpp"
+#include "runners/distance_runner.hpp"
+#include "runners/grid_runner.hpp"
+#include "runners/report_runner.hpp"
+#include "runners/sample_runner.hpp"
+
+namespace ncv {
+
+struct VerifyOptions {
+  SampleOptions sampling;
+  GridOptions grid;
+  DistanceOptions distance;
+  ReportOptions report;      // its tolerance also selects the colour map
+  ColorizeOptions colorize;  // its tolerance is the report's
+};
+
+struct RunJob {
+  std::string workpiece;
+  std::string nominal;
+  std::string folder;  // empty: WORKPIECE stem + ".ncverify"
+  VerifyOptions options;
+  ReportFormat format = ReportFormat::text;  // of the report on standard output
+  std::string timings;                       // where to write the phase times; empty: nowhere
+  std::string histogram_svg;                 // empty: PART.histogram.svg in the folder
+  std::string legend_svg;                    // empty: PART.legend.svg in the folder
+};
+
+// The exit status: 0 within tolerance or without one, 1 out of tolerance.
+int run_verification(const RunJob& job);
+
+}  // namespace ncv

@@ -1,0 +1,16 @@
+#include "search/indexed_reference.hpp"
+
+namespace ncv {
+
+IndexedReference index_reference(Mesh mesh, const std::string& source, const GridOptions& options,
+                                 GridStatistics* statistics) {
+  IndexedReference reference;
+  reference.source = source;
+  reference.mesh = std::move(mesh);
+  reference.hash = mesh_hash(reference.mesh);
+  reference.surface = std::make_unique<ReferenceSurface>(reference.mesh, source);
+  reference.grid = build_background_grid(*reference.surface, options, statistics);
+  return reference;
+}
+
+}  // namespace ncv
