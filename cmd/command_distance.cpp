@@ -13,6 +13,10 @@ void add_distance_command(CLI::App& app, CommandContext&) {
   sub->add_option("grid", job->grid, "Grid file from `grid-build`")->required();
   add_output_option(*sub, job->output, "Distance file (default: SAMPLES stem + .dist)");
   add_distance_options(*sub, job->options);
+  sub->add_flag(
+      "--reverse", [job](std::int64_t) { job->options.direction = Direction::reverse; },
+      "The samples are the nominal's and the grid the workpiece's: sign so that + is "
+      "material left (the nominal point inside the workpiece), - a gouge");
   sub->callback([job] {
     job->output = default_output(job->output, job->samples, ".dist");
     run_distance(*job);

@@ -27,6 +27,10 @@ void add_run_command(CLI::App& app, CommandContext& context) {
   add_colorize_options(*sub, options.colorize);
   sub->add_option("--legend", job->legend_svg,
                   "Where to write the colour bar (default: in the output folder)");
+  sub->add_flag(
+      "--one-sided", [job](std::int64_t) { job->options.two_sided = false; },
+      "Measure the workpiece against the nominal only (not the nominal against the "
+      "workpiece: a feature the workpiece lacks can then pass)");
   add_enum_option(*sub, "--format", job->format, kReportFormatNames, "Report on stdout");
   sub->add_option("--timings", job->timings,
                   "Also write each phase's wall time and the peak memory as JSON (benchmarks)");

@@ -11,6 +11,11 @@ void add_sample_command(CLI::App& app, CommandContext&) {
   sub->add_option("mesh", job->mesh, "Mesh to sample (STL, PLY, OBJ, OFF; - = stdin)")->required();
   add_output_option(*sub, job->output, "Samples file (default: MESH stem + .samples)");
   add_sample_options(*sub, job->options);
+  sub->add_option("--step-from", job->step_from,
+                  "Use the absolute step and the scheme of this samples file (to sample a "
+                  "nominal as densely as its workpiece, for `distance --reverse`)")
+      ->excludes("--step")
+      ->excludes("--scheme");
   sub->callback([job] {
     job->output = default_output(job->output, job->mesh, ".samples");
     run_sample(*job);

@@ -10,7 +10,9 @@ void add_stats_command(CLI::App& app, CommandContext& context) {
   auto job = std::make_shared<StatsJob>();
   CLI::App* sub = app.add_subcommand(
       "stats", "Error measures of a distance file; exit 1 when out of tolerance");
-  sub->add_option("distances", job->distances, "Distance file from `distance` (- = stdin)");
+  sub->add_option("distances", job->distances,
+                  "Distance file from `distance` (- = stdin), and optionally the same part's "
+                  "reverse distance file (`distance --reverse`)");
   add_enum_option(*sub, "--format", job->format, kReportFormatNames, "Report format");
   sub->add_flag(
       "--no-header", [job](std::int64_t) { job->csv_header = false; },

@@ -19,7 +19,8 @@ void read_distances(ncv::Buffer<char> bytes) {
       std::move(bytes), "fuzz.dist", ncv::FileKind::distances, ncv::kDistancesFormatVersion);
   const ncv::DistanceSet set = ncv::load_distance_set(c);
   const ncv::Tolerance tolerance{-0.05, 0.1};
-  const ncv::PartReport report = ncv::make_part_report(set, tolerance, ncv::HistogramOptions{});
+  const ncv::VerificationReport report{
+      ncv::make_part_report(set, tolerance, ncv::HistogramOptions{}), std::nullopt};
   std::ostringstream out;
   out << ncv::report_text(report) << ncv::report_json(report).dump() << ncv::report_csv_row(report);
   const ncv::ColorMap map = ncv::make_color_map(ncv::ColorMapKind::tolerance, {-1, 1}, tolerance);

@@ -35,10 +35,9 @@ void read_grid(ncv::Buffer<char> bytes) {
                                                  ncv::kGridFormatVersion);
   const ncv::IndexedReference g = ncv::load_indexed_reference(c);
   const std::vector<ncv::Vec3> points = query_points(g.mesh);
-  const ncv::SignMethod sign = g.nominal->automatic_sign_method();
+  const ncv::SignMethod sign = g.surface->automatic_sign_method();
   const ncv::SearchIndex search(g);
-  const ncv::DistanceField field =
-      ncv::compute_signed_distances(*g.nominal, &search, points, {}, sign);
+  const ncv::DistanceField field = ncv::compute_signed_distances(search, points, {}, sign);
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (field.closest_face[i] >= g.mesh.triangle_count()) __builtin_trap();
   }

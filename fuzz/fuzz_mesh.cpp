@@ -41,12 +41,12 @@ void verify(const ncv::Mesh& workpiece) {
   const ncv::SampleSet samples = ncv::sample_mesh(workpiece, std::move(plan));
 
   const ncv::IndexedReference g = ncv::index_reference(workpiece, "fuzz", {}, nullptr);
-  const ncv::SignMethod sign = g.nominal->automatic_sign_method();
+  const ncv::SignMethod sign = g.surface->automatic_sign_method();
   const ncv::SearchIndex search(g);
   const ncv::DistanceField by_grid =
-      ncv::compute_signed_distances(*g.nominal, &search, samples.positions, {}, sign);
+      ncv::compute_signed_distances(search, samples.positions, {}, sign);
   const ncv::DistanceField by_brute_force =
-      ncv::compute_signed_distances(*g.nominal, nullptr, samples.positions, {}, sign);
+      ncv::compute_signed_distances(*g.surface, samples.positions, {}, sign);
   for (std::size_t i = 0; i < samples.sample_count(); ++i) {
     if (by_grid.closest_face[i] != by_brute_force.closest_face[i] ||
         std::memcmp(&by_grid.distance[i], &by_brute_force.distance[i], sizeof(double)) != 0) {

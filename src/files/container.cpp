@@ -205,9 +205,11 @@ Container Container::parse(InputBytes bytes, const std::string& source, FileKind
   }
   c.version_ = load<std::uint32_t>(data + 12);
   if (c.version_ != version) {
-    c.fail(fmt::format("{} format version {} is {} than this ncverify reads (version {})",
+    c.fail(fmt::format("{} format version {} is {} than this ncverify reads (version {}): {}",
                        kind_description(kind), c.version_, c.version_ > version ? "newer" : "older",
-                       version));
+                       version,
+                       c.version_ > version ? "use the ncverify that wrote it"
+                                            : "make it again with this ncverify"));
   }
   const auto meta_bytes = load<std::uint64_t>(data + 16);
   const auto file_bytes = load<std::uint64_t>(data + 24);

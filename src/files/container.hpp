@@ -33,9 +33,9 @@ namespace ncv {
 enum class FileKind { samples, grid, distances };
 
 // The format version this build writes and reads, per kind.
-inline constexpr std::uint32_t kSamplesFormatVersion = 1;
+inline constexpr std::uint32_t kSamplesFormatVersion = 2;
 inline constexpr std::uint32_t kGridFormatVersion = 1;
-inline constexpr std::uint32_t kDistancesFormatVersion = 1;
+inline constexpr std::uint32_t kDistancesFormatVersion = 2;
 std::uint32_t format_version(FileKind kind);
 
 std::string kind_tag(FileKind kind);          // "SMPL", ...

@@ -37,12 +37,13 @@ std::string string_field(const Container& c, const std::string& pointer) {
 
 nlohmann::json distance_meta(const DistanceSet& set) {
   nlohmann::json meta = sample_set_meta(set.samples);
-  nlohmann::json nominal = {{"source", set.reference.source},
-                            {"hash", hash_hex(set.reference.hash)},
-                            {"triangles", set.reference.triangles}};
-  nominal.update(box_json(set.reference.box));
-  meta["nominal"] = nominal;
-  meta["distance"] = {{"sign_method", set.sign_method},
+  nlohmann::json reference = {{"source", set.reference.source},
+                              {"hash", hash_hex(set.reference.hash)},
+                              {"triangles", set.reference.triangles}};
+  reference.update(box_json(set.reference.box));
+  meta["reference"] = reference;
+  meta["distance"] = {{"direction", name_of(kDirectionNames, set.direction)},
+                      {"sign_method", set.sign_method},
                       {"search", set.search},
                       {"triangles_tested_per_sample", set.triangles_tested_per_sample}};
   meta["records"]["sections"] = {"positions", "owner",         "lattice_i",   "lattice_j",
@@ -70,10 +71,13 @@ DistanceSet load_distance_set(const Container& c) {
   DistanceSet set;
   set.samples = load_sample_set(c);
   const std::uint64_t S = set.samples.sample_count();
-  set.reference.source = string_field(c, "/nominal/source");
-  set.reference.hash = parse_hash_hex(string_field(c, "/nominal/hash"), c);
-  set.reference.triangles = c.count("/nominal/triangles");
-  set.reference.box = box_from(c, "/nominal");
+  set.reference.source = string_field(c, "/reference/source");
+  set.reference.hash = parse_hash_hex(string_field(c, "/reference/hash"), c);
+  set.reference.triangles = c.count("/reference/triangles");
+  set.reference.box = box_from(c, "/reference");
+  const auto direction = parse_name(kDirectionNames, string_field(c, "/distance/direction"));
+  if (!direction) c.fail("metadata field /distance/direction is neither forward nor reverse");
+  set.direction = *direction;
   set.sign_method = string_field(c, "/distance/sign_method");
   set.search = string_field(c, "/distance/search");
   if (!c.field("/distance/triangles_tested_per_sample").is_number()) {
@@ -89,7 +93,7 @@ DistanceSet load_distance_set(const Container& c) {
       c.fail("a distance or closest point is not finite");
     }
     if (set.field.closest_face[s] >= set.reference.triangles) {
-      c.fail("a closest face lies outside the nominal");
+      c.fail("a closest face lies outside the reference surface");
     }
   }
   return set;

@@ -1,10 +1,11 @@
 // The distance file (kind DIST): the samples (same sections as the samples file, so it is
-// self-contained for stats and colorize) plus, per sample, the signed distance, the closest
-// nominal point and the closest nominal face. Layout in docs/FORMATS.md.
+// self-contained for stats and colorize), the direction, plus, per sample, the signed error,
+// the closest point and the closest face of the reference surface. Layout in docs/FORMATS.md.
 #pragma once
 
 #include <string>
 
+#include "distance/direction.hpp"
 #include "distance/signed_distance.hpp"
 #include "files/container.hpp"
 #include "sampling/sampling.hpp"
@@ -19,7 +20,11 @@ struct ReferenceInfo {
   BoundingBox box;
 };
 
+// The samples of one surface and their signed errors against the other. Forward: the
+// workpiece's samples against the nominal (the reference). Reverse: the nominal's samples
+// against the workpiece, field.distance negated so that + is material left in both.
 struct DistanceSet {
+  Direction direction = Direction::forward;
   SampleSet samples;
   DistanceField field;
   ReferenceInfo reference;

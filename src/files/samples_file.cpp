@@ -17,11 +17,11 @@ SamplingScheme parse_scheme(const std::string& name, const Container& from) {
 
 void validate_mesh(const Mesh& mesh, const Container& from) {
   for (const Vec3& v : mesh.vertices) {
-    if (!is_finite(v)) from.fail("workpiece vertex coordinates are not finite");
+    if (!is_finite(v)) from.fail("mesh vertex coordinates are not finite");
   }
   for (const Triangle& t : mesh.triangles) {
     for (std::uint32_t v : t) {
-      if (v >= mesh.vertex_count()) from.fail("workpiece triangle refers to a missing vertex");
+      if (v >= mesh.vertex_count()) from.fail("mesh triangle refers to a missing vertex");
     }
   }
 }
@@ -66,12 +66,29 @@ void validate_lattice(const SampleSet& set, const Container& from) {
   }
 }
 
+SamplingSettings sampling_settings(const Container& c) {
+  if (!c.field("/mesh/source").is_string()) c.fail("mesh source is malformed");
+  if (!c.field("/sampling/step").is_number() || !c.field("/sampling/step_spec").is_string() ||
+      !c.field("/sampling/scheme").is_string()) {
+    c.fail("sampling parameters are malformed");
+  }
+  SamplingSettings settings;
+  settings.source = c.field("/mesh/source").get<std::string>();
+  settings.step = c.field("/sampling/step").get<double>();
+  if (!(settings.step > 0) || !std::isfinite(settings.step)) {
+    c.fail("sampling step is not positive");
+  }
+  settings.step_spec = c.field("/sampling/step_spec").get<std::string>();
+  settings.scheme = parse_scheme(c.field("/sampling/scheme").get<std::string>(), c);
+  return settings;
+}
+
 }  // namespace
 
 nlohmann::json sample_set_meta(const SampleSet& set) {
   const BoundingBox box = bounding_box(set.mesh);
   return {{"tool", "ncverify " NCV_VERSION},
-          {"workpiece",
+          {"mesh",
            {{"source", set.source},
             {"hash", hash_hex(set.mesh_hash)},
             {"vertices", set.mesh.vertex_count()},
@@ -92,8 +109,8 @@ nlohmann::json sample_set_meta(const SampleSet& set) {
 void add_sample_sections(ContainerWriter& writer, const SampleSet& set) {
   const std::uint64_t V = set.mesh.vertex_count(), T = set.mesh.triangle_count(),
                       S = set.sample_count();
-  writer.add<double>("workpiece_vertices", flat_coordinates(set.mesh.vertices), {V, 3});
-  writer.add<std::uint32_t>("workpiece_triangles", flat_indices(set.mesh.triangles), {T, 3});
+  writer.add<double>("mesh_vertices", flat_coordinates(set.mesh.vertices), {V, 3});
+  writer.add<std::uint32_t>("mesh_triangles", flat_indices(set.mesh.triangles), {T, 3});
   writer.add<std::uint32_t>("tri_n", set.lattice_sizes, {T});
   writer.add<std::uint64_t>("tri_first", set.first_interior_sample, {T});
   writer.add<std::uint32_t>("vertex_sample", set.vertex_sample, {V});
@@ -105,24 +122,19 @@ void add_sample_sections(ContainerWriter& writer, const SampleSet& set) {
 
 SampleSet load_sample_set(const Container& c) {
   SampleSet set;
-  const std::uint64_t V = c.count("/workpiece/vertices"), T = c.count("/workpiece/triangles"),
+  const std::uint64_t V = c.count("/mesh/vertices"), T = c.count("/mesh/triangles"),
                       S = c.count("/sampling/samples");
-  set.mesh.vertices = c.get_rows<double, Vec3>("workpiece_vertices", V);
-  set.mesh.triangles = c.get_rows<std::uint32_t, Triangle>("workpiece_triangles", T);
+  set.mesh.vertices = c.get_rows<double, Vec3>("mesh_vertices", V);
+  set.mesh.triangles = c.get_rows<std::uint32_t, Triangle>("mesh_triangles", T);
   validate_mesh(set.mesh, c);
-  if (!c.field("/workpiece/source").is_string()) c.fail("workpiece source is malformed");
-  set.source = c.field("/workpiece/source").get<std::string>();
-  if (!c.field("/workpiece/hash").is_string()) c.fail("workpiece hash is malformed");
-  set.mesh_hash = parse_hash_hex(c.field("/workpiece/hash").get<std::string>(), c);
-  if (mesh_hash(set.mesh) != set.mesh_hash) c.fail("workpiece hash does not match");
-  if (!c.field("/sampling/step").is_number() || !c.field("/sampling/step_spec").is_string() ||
-      !c.field("/sampling/scheme").is_string()) {
-    c.fail("sampling parameters are malformed");
-  }
-  set.step = c.field("/sampling/step").get<double>();
-  if (!(set.step > 0) || !std::isfinite(set.step)) c.fail("sampling step is not positive");
-  set.step_spec = c.field("/sampling/step_spec").get<std::string>();
-  set.scheme = parse_scheme(c.field("/sampling/scheme").get<std::string>(), c);
+  if (!c.field("/mesh/hash").is_string()) c.fail("mesh hash is malformed");
+  set.mesh_hash = parse_hash_hex(c.field("/mesh/hash").get<std::string>(), c);
+  if (mesh_hash(set.mesh) != set.mesh_hash) c.fail("mesh hash does not match");
+  const SamplingSettings settings = sampling_settings(c);
+  set.source = settings.source;
+  set.step = settings.step;
+  set.step_spec = settings.step_spec;
+  set.scheme = settings.scheme;
   set.lattice_sizes = c.get<std::uint32_t>("tri_n", T);
   set.first_interior_sample = c.get<std::uint64_t>("tri_first", T);
   set.vertex_sample = c.get<std::uint32_t>("vertex_sample", V);
@@ -138,6 +150,10 @@ void write_samples_file(const SampleSet& set, OutputFile& out) {
   ContainerWriter writer(FileKind::samples, kSamplesFormatVersion, sample_set_meta(set));
   add_sample_sections(writer, set);
   writer.write(out);
+}
+
+SamplingSettings read_sampling_settings(const std::string& path) {
+  return sampling_settings(Container::read(path, FileKind::samples, kSamplesFormatVersion));
 }
 
 SampleSet read_samples_file(const std::string& path) {

@@ -17,6 +17,16 @@ void add_sample_sections(ContainerWriter& writer, const SampleSet& set);
 // Loads and fully validates (indices, lattice bookkeeping, mesh hash) the sample sections.
 SampleSet load_sample_set(const Container& container);
 
+// What a samples file was sampled with, from its header alone (the file is still checked
+// whole): the absolute step, the step as given, the scheme and the mesh's source.
+struct SamplingSettings {
+  double step = 0;
+  std::string step_spec;
+  SamplingScheme scheme = SamplingScheme::all;
+  std::string source;
+};
+SamplingSettings read_sampling_settings(const std::string& path);
+
 void write_samples_file(const SampleSet& set, OutputFile& out);
 SampleSet read_samples_file(const std::string& path);
 

@@ -1,5 +1,6 @@
 #include "runners/colorize_runner.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
@@ -48,10 +49,11 @@ ColoredSurface colorize(const DistanceSet& distances, const ColorizeOptions& opt
 }
 
 Buffer<char> colored_ply(const ColoredSurface& colored, const DistanceSet& distances) {
-  const std::string comments[] = {"ncverify " NCV_VERSION " signed error of " +
-                                      distances.samples.source + " against " +
-                                      distances.reference.source,
-                                  "positive = excess material, negative = gouge"};
+  const std::string comments[] = {
+      fmt::format("ncverify {} {}: signed error of {} against {}", NCV_VERSION,
+                  name_of(kDirectionNames, distances.direction), distances.samples.source,
+                  distances.reference.source),
+      "positive = material left (excess), negative = gouge"};
   return error_ply(colored.mesh, colored.map, comments);
 }
 

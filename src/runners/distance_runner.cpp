@@ -3,6 +3,9 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 
 #include "files/grid_file.hpp"
@@ -31,6 +34,22 @@ double overlap_share(const BoundingBox& a, const BoundingBox& b) {
   return inter / std::min(va, vb);
 }
 
+struct SampledPart {
+  BoundingBox box;
+  std::string source;
+};
+
+// Reverse: the error is + where the nominal point lies inside the workpiece (material left),
+// the negated signed distance to the workpiece; a point on it stays +0.
+void reverse_sign(Buffer<double>& distances) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, distances.size(), 1 << 16),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i < range.end(); ++i) {
+                        distances[i] = distances[i] == 0 ? 0.0 : -distances[i];
+                      }
+                    });
+}
+
 // What the two files' geometry can tell about whether they belong together. Certain: a
 // workpiece whose every point is farther from the nominal than the size of either part is
 // not a machining of it in its frame; no tolerance verdict on it means anything, and an
@@ -38,22 +57,27 @@ double overlap_share(const BoundingBox& a, const BoundingBox& b) {
 // refused. Only suspicious (warned, measured anyway): little overlap, no overlap at close
 // range, very different sizes, or the nominal itself given as the workpiece (zero
 // everywhere; a legitimate self-check, a mix-up otherwise).
-void check_belong_together(const SampleSet& samples, const IndexedReference& grid) {
-  const BoundingBox workpiece = bounding_box(samples.mesh);
-  const BoundingBox nominal = bounding_box(grid.mesh);
-  refuse_if_apart(workpiece, samples.source, nominal, grid.source);
-  if (samples.mesh_hash == grid.hash) {
+void check_belong_together(const SampleSet& samples, const IndexedReference& reference,
+                           Direction direction) {
+  const bool forward = direction == Direction::forward;
+  const SampledPart workpiece = forward
+                                    ? SampledPart{bounding_box(samples.mesh), samples.source}
+                                    : SampledPart{bounding_box(reference.mesh), reference.source};
+  const SampledPart nominal = forward ? SampledPart{bounding_box(reference.mesh), reference.source}
+                                      : SampledPart{bounding_box(samples.mesh), samples.source};
+  refuse_if_apart(workpiece.box, workpiece.source, nominal.box, nominal.source);
+  if (samples.mesh_hash == reference.hash) {
     spdlog::warn("the workpiece ({}) is the nominal ({}) itself: every distance is zero",
-                 samples.source, grid.source);
+                 workpiece.source, nominal.source);
   }
-  const double share = overlap_share(workpiece, nominal);
+  const double share = overlap_share(workpiece.box, nominal.box);
   if (share < 0.5) {
     spdlog::warn(
         "the workpiece ({}) and the nominal ({}) barely overlap ({:.0f} % of the "
         "smaller bounding box): a wrong file, unit or coordinate frame?",
-        samples.source, grid.source, 100 * share);
+        workpiece.source, nominal.source, 100 * share);
   }
-  const double ratio = workpiece.diagonal() / std::max(nominal.diagonal(), 1e-300);
+  const double ratio = workpiece.box.diagonal() / std::max(nominal.box.diagonal(), 1e-300);
   if (ratio > 5 || ratio < 0.2) {
     spdlog::warn("the workpiece is {:.3g} times the size of the nominal: a unit mismatch?", ratio);
   }
@@ -76,7 +100,7 @@ void refuse_if_apart(const BoundingBox& workpiece, const std::string& workpiece_
 
 DistanceSet measure_distances(SampleSet samples, const IndexedReference& reference,
                               const DistanceOptions& options, double* seconds) {
-  check_belong_together(samples, reference);
+  check_belong_together(samples, reference, options.direction);
   const ReferenceSurface& surface = *reference.surface;
   const SignMethod method = resolve_sign_method(surface, options.sign);
   const std::vector<Vec3> normals =
@@ -96,8 +120,10 @@ DistanceSet measure_distances(SampleSet samples, const IndexedReference& referen
         compute_signed_distances(index, samples.positions, normals, method, &statistics, report);
   }
   progress.finish();
+  if (options.direction == Direction::reverse) reverse_sign(result.field.distance);
   if (seconds) *seconds = clock.seconds();
 
+  result.direction = options.direction;
   result.samples = std::move(samples);
   result.reference = {reference.source, reference.hash, reference.mesh.triangle_count(),
                       bounding_box(reference.mesh)};
@@ -110,9 +136,10 @@ DistanceSet measure_distances(SampleSet samples, const IndexedReference& referen
 void log_distances(const DistanceSet& d, double seconds) {
   const auto samples = static_cast<double>(d.samples.sample_count());
   spdlog::info(
-      "{} samples against {} nominal triangles in {:.3f} s ({:.3g} samples/s); {} "
+      "{}: {} samples of {} against {} triangles of {} in {:.3f} s ({:.3g} samples/s); {} "
       "search, {:.1f} triangles tested per sample; sign by {}",
-      d.samples.sample_count(), d.reference.triangles, seconds, samples / std::max(seconds, 1e-9),
+      name_of(kDirectionNames, d.direction), d.samples.sample_count(), d.samples.source,
+      d.reference.triangles, d.reference.source, seconds, samples / std::max(seconds, 1e-9),
       d.search, d.triangles_tested_per_sample, d.sign_method);
 }
 

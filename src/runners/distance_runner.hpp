@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "distance/direction.hpp"
 #include "files/distance_file.hpp"
 #include "reference/sign_method.hpp"
 #include "sampling/sampling.hpp"
@@ -15,6 +16,9 @@ namespace ncv {
 struct DistanceOptions {
   SignMethod sign = SignMethod::automatic;
   bool brute_force = false;  // test every reference triangle (the reference result), no grid
+  // forward: the workpiece's samples against the nominal; reverse: the nominal's samples
+  // against the workpiece, signed so that + is still material left (distance/direction.hpp).
+  Direction direction = Direction::forward;
 };
 
 // Refuses (InputError naming the workpiece) a workpiece farther from the nominal than the

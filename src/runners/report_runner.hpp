@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "files/distance_file.hpp"
 #include "statistics/area_histogram.hpp"
@@ -20,12 +21,20 @@ struct ReportOptions {
 };
 
 PartReport make_report(const DistanceSet& distances, const ReportOptions& options);
+// The report of one direction, or of both (`reverse` not null: the reverse direction of the
+// same part, which check_same_part vouches for).
+VerificationReport make_verification_report(const DistanceSet& main, const DistanceSet* reverse,
+                                            const ReportOptions& options);
+// Throws UsageError unless `reverse` measures the nominal of `forward` against its workpiece,
+// by the meshes' content hashes.
+void check_same_part(const DistanceSet& forward, const std::string& forward_source,
+                     const DistanceSet& reverse, const std::string& reverse_source);
 // The area-weighted histogram as SVG, with the tolerance limits.
 std::string histogram_svg(const PartReport& report);
 
-// `ncverify stats DIST`.
+// `ncverify stats DIST [REVERSE_DIST]`.
 struct StatsJob {
-  std::string distances;
+  std::vector<std::string> distances;  // a forward and/or a reverse distance file
   std::string output = "-";
   ReportFormat format = ReportFormat::text;
   bool csv_header = true;        // false: --no-header, the row alone

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <filesystem>
+
 #include "files/samples_file.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "util/error.hpp"
@@ -22,7 +24,7 @@ SampledSurface sample_surface(Mesh mesh, const std::string& source, const Sample
                       static_cast<double>(predicted) * kBytesPerSampleDownstream, options.force);
   SampledSurface sampled;
   sampled.samples = sample_mesh(std::move(mesh), std::move(plan), &sampled.report);
-  sampled.samples.step_spec = options.step.text();
+  sampled.samples.step_spec = options.step_label.empty() ? options.step.text() : options.step_label;
   sampled.samples.source = source;
   sampled.seconds = clock.seconds();
   return sampled;
@@ -37,6 +39,17 @@ void log_sampling(const SampledSurface& sampled) {
                r.samples, r.small_triangles,
                s.scheme == SamplingScheme::all ? "sampled at their vertices" : "skipped",
                r.degenerate_triangles, sampled.seconds);
+}
+
+SampleOptions sampling_like(const std::string& samples_path, bool force) {
+  const SamplingSettings settings = read_sampling_settings(samples_path);
+  SampleOptions options;
+  options.step = SamplingStep{settings.step, false};
+  options.scheme = settings.scheme;
+  options.force = force;
+  options.step_label =
+      settings.step_spec + " of " + std::filesystem::path(settings.source).filename().string();
+  return options;
 }
 
 // The output is opened first, so an unwritable destination fails before any work; the

@@ -16,6 +16,8 @@ struct SampleOptions {
   SamplingStep step;  // 0.1 %
   SamplingScheme scheme = SamplingScheme::all;
   bool force = false;  // sample even when the memory guard refuses
+  // How the step is shown in files and reports; empty: as the step reads.
+  std::string step_label;
 };
 
 // Memory a sample costs through the whole pipeline (samples, distances, reading copies): what
@@ -34,10 +36,16 @@ SampledSurface sample_surface(Mesh mesh, const std::string& source, const Sample
 // The paper's Table 1 figures of a sampling, on stderr.
 void log_sampling(const SampledSurface& sampled);
 
+// The options another samples file was made with: its absolute step (so that the nominal of a
+// two-sided check is sampled as densely as its workpiece) and its scheme; the step as given
+// reads "0.1% of core_finishing.stl".
+SampleOptions sampling_like(const std::string& samples_path, bool force);
+
 // `ncverify sample MESH -o OUT`.
 struct SampleJob {
-  std::string mesh;    // path, "-" = standard input
-  std::string output;  // path, "-" = standard output
+  std::string mesh;       // path, "-" = standard input
+  std::string output;     // path, "-" = standard output
+  std::string step_from;  // a samples file whose step and scheme to use; empty: options'
   SampleOptions options;
 };
 void run_sample(const SampleJob& job);

@@ -45,71 +45,132 @@ fs::path in_folder(const std::string& given, const fs::path& otherwise) {
   return given.empty() ? otherwise : fs::path(given);
 }
 
+// Where one direction's intermediate files go.
+struct DirectionFiles {
+  fs::path samples, grid, distances;
+};
+
+// A mesh the caller still needs later is copied, else moved.
+Mesh take(Mesh& mesh, bool needed_later) {
+  return needed_later ? mesh : std::move(mesh);
+}
+
+// One direction's steps: sample, index the reference, measure; each file written as it is
+// made.
+DistanceSet measure_direction(Mesh sampled_mesh, const std::string& sampled_source,
+                              Mesh reference_mesh, const std::string& reference_source,
+                              const SampleOptions& sampling, const VerifyOptions& options,
+                              Direction direction, const DirectionFiles& files, PhaseLog& phases) {
+  const std::string prefix = direction == Direction::forward ? "" : "reverse ";
+  SampledSurface sampled = sample_surface(std::move(sampled_mesh), sampled_source, sampling);
+  log_sampling(sampled);
+  phases.done(prefix + "sample");
+  phases.time("write", [&] {
+    write_file(files.samples, OutputKind::binary,
+               [&](OutputFile& out) { write_samples_file(sampled.samples, out); });
+  });
+
+  const IndexedSurface indexed =
+      index_surface(std::move(reference_mesh), reference_source, options.grid);
+  log_grid(indexed);
+  phases.done(prefix + "grid-build");
+  phases.time("write", [&] {
+    write_file(files.grid, OutputKind::binary, [&](OutputFile& out) {
+      write_grid_file(indexed.reference, indexed.statistics, out);
+    });
+  });
+
+  DistanceOptions distance = options.distance;
+  distance.direction = direction;
+  double seconds = 0;
+  DistanceSet distances =
+      measure_distances(std::move(sampled.samples), indexed.reference, distance, &seconds);
+  log_distances(distances, seconds);
+  phases.done(prefix + "distance");
+  phases.time("write", [&] {
+    write_file(files.distances, OutputKind::binary,
+               [&](OutputFile& out) { write_distance_file(distances, out); });
+  });
+  return distances;
+}
+
+// The nominal is sampled with the workpiece's absolute step and scheme, so both directions
+// measure at the same density.
+SampleOptions reverse_sampling(const SampleSet& forward, const SampleOptions& options) {
+  SampleOptions reverse = options;
+  reverse.step = SamplingStep{forward.step, false};
+  reverse.step_label = forward.step_spec + " of " + fs::path(forward.source).filename().string();
+  return reverse;
+}
+
 }  // namespace
 
 int run_verification(const RunJob& job) {
   const std::string part = stem(job.workpiece);
   const fs::path folder = output_folder(job);
   const VerifyOptions& options = job.options;
+  const std::string workpiece_source = input_name(job.workpiece);
+  const std::string nominal_source = input_name(job.nominal);
   PhaseLog phases;
 
   Mesh workpiece = read_mesh(job.workpiece);
   Mesh nominal = read_mesh(job.nominal);
-  refuse_if_apart(bounding_box(workpiece), input_name(job.workpiece), bounding_box(nominal),
-                  input_name(job.nominal));
+  refuse_if_apart(bounding_box(workpiece), workpiece_source, bounding_box(nominal), nominal_source);
   phases.done("read");
 
-  SampledSurface sampled =
-      sample_surface(std::move(workpiece), input_name(job.workpiece), options.sampling);
-  log_sampling(sampled);
-  phases.done("sample");
-  phases.time("write", [&] {
-    write_file(folder / (part + ".samples"), OutputKind::binary,
-               [&](OutputFile& out) { write_samples_file(sampled.samples, out); });
-  });
+  // The nominal's grid file keeps the nominal's name, as grid-build names it.
+  const DistanceSet forward = measure_direction(
+      take(workpiece, options.two_sided), workpiece_source, take(nominal, options.two_sided),
+      nominal_source, options.sampling, options, Direction::forward,
+      {folder / (part + ".samples"), folder / (stem(job.nominal) + ".grid"),
+       folder / (part + ".dist")},
+      phases);
+  std::optional<DistanceSet> reverse;
+  if (options.two_sided) {
+    reverse = measure_direction(
+        std::move(nominal), nominal_source, std::move(workpiece), workpiece_source,
+        reverse_sampling(forward.samples, options.sampling), options, Direction::reverse,
+        {folder / (part + ".reverse.samples"), folder / (part + ".reverse.grid"),
+         folder / (part + ".reverse.dist")},
+        phases);
+  }
 
-  const IndexedSurface indexed =
-      index_surface(std::move(nominal), input_name(job.nominal), options.grid);
-  phases.done("grid-build");
-  phases.time("write", [&] {
-    write_file(folder / (stem(job.nominal) + ".grid"), OutputKind::binary, [&](OutputFile& out) {
-      write_grid_file(indexed.reference, indexed.statistics, out);
-    });
-  });
-
-  double distance_seconds = 0;
-  const DistanceSet distances = measure_distances(std::move(sampled.samples), indexed.reference,
-                                                  options.distance, &distance_seconds);
-  log_distances(distances, distance_seconds);
-  phases.done("distance");
-  phases.time("write", [&] {
-    write_file(folder / (part + ".dist"), OutputKind::binary,
-               [&](OutputFile& out) { write_distance_file(distances, out); });
-  });
-
-  const PartReport report = make_report(distances, options.report);
+  const VerificationReport report =
+      make_verification_report(forward, reverse ? &*reverse : nullptr, options.report);
   write_file(folder / (part + ".report.txt"), OutputKind::text,
              [&](OutputFile& out) { out.write(format_report(report, ReportFormat::text)); });
   write_file(folder / (part + ".report.json"), OutputKind::text,
              [&](OutputFile& out) { out.write(format_report(report, ReportFormat::json)); });
   write_file(in_folder(job.histogram_svg, folder / (part + ".histogram.svg")), OutputKind::text,
-             [&](OutputFile& out) { out.write(histogram_svg(report)); });
+             [&](OutputFile& out) { out.write(histogram_svg(report.main)); });
+  if (report.reverse) {
+    write_file(folder / (part + ".reverse.histogram.svg"), OutputKind::text,
+               [&](OutputFile& out) { out.write(histogram_svg(*report.reverse)); });
+  }
   phases.done("stats");
 
   ColorizeOptions colorize = options.colorize;
   colorize.tolerance = options.report.tolerance;
-  write_colored(distances, colorize, (folder / (part + ".ply")).string(),
+  write_colored(forward, colorize, (folder / (part + ".ply")).string(),
                 in_folder(job.legend_svg, folder / (part + ".legend.svg")).string());
+  if (reverse) {
+    write_colored(*reverse, colorize, (folder / (part + ".reverse.ply")).string(),
+                  (folder / (part + ".reverse.legend.svg")).string());
+  }
   phases.done("colorize");
 
   OutputFile out("-", OutputKind::text);
   out.write(format_report(report, job.format));
   out.commit();
-  phases.summary(job.timings,
-                 {{"triangles", distances.samples.mesh.triangle_count()},
-                  {"samples", distances.samples.sample_count()},
-                  {"nominal_triangles", distances.reference.triangles},
-                  {"triangles_tested_per_sample", distances.triangles_tested_per_sample}});
+  nlohmann::json figures = {{"triangles", forward.samples.mesh.triangle_count()},
+                            {"samples", forward.samples.sample_count()},
+                            {"nominal_triangles", forward.reference.triangles},
+                            {"triangles_tested_per_sample", forward.triangles_tested_per_sample}};
+  if (reverse) {
+    figures["reverse_samples"] = reverse->samples.sample_count();
+    figures["reverse_triangles_tested_per_sample"] = reverse->triangles_tested_per_sample;
+  }
+  phases.summary(job.timings, figures);
   spdlog::info("outputs in {}/", folder.string());
   return verdict_status(report);
 }

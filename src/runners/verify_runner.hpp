@@ -1,5 +1,6 @@
 // `ncverify run WORKPIECE NOMINAL`: every step in one go (sample, grid, distance, report,
-// colorize), keeping each step's output in a folder, the report on standard output.
+// colorize) in both directions (docs/METHOD.md "Both directions"), keeping each step's output
+// in a folder, the report on standard output.
 #pragma once
 
 #include <string>
@@ -18,6 +19,9 @@ struct VerifyOptions {
   DistanceOptions distance;
   ReportOptions report;      // its tolerance also selects the colour map
   ColorizeOptions colorize;  // its tolerance is the report's
+  // Also the reverse direction: the nominal sampled with the workpiece's absolute step and
+  // measured against the workpiece, so a feature the workpiece lacks cannot pass.
+  bool two_sided = true;
 };
 
 struct RunJob {
@@ -31,7 +35,7 @@ struct RunJob {
   std::string legend_svg;                    // empty: PART.legend.svg in the folder
 };
 
-// The exit status: 0 within tolerance or without one, 1 out of tolerance.
+// The exit status: 0 within tolerance (both directions) or without one, 1 out of tolerance.
 int run_verification(const RunJob& job);
 
 }  // namespace ncv

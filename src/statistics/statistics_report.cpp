@@ -26,6 +26,30 @@ std::size_t count_regions(const PartReport& r, RegionKind kind) {
       r.regions.begin(), r.regions.end(), [&](const ErrorRegion& e) { return e.kind == kind; }));
 }
 
+bool forward(const PartReport& r) {
+  return r.distances->direction == Direction::forward;
+}
+
+// The sampled surface: its counts and areas.
+nlohmann::json sampled_json(const PartReport& r) {
+  const DistanceSet& d = *r.distances;
+  const ErrorStatistics& s = r.statistics;
+  return {{"source", d.samples.source},
+          {"hash", hash_hex(d.samples.mesh_hash)},
+          {"triangles", s.triangles},
+          {"area", s.workpiece_area},
+          {"sampled_area", s.sampled_area},
+          {"triangles_vertex_only", s.triangles_vertex_only},
+          {"triangles_unsampled", s.triangles_unsampled}};
+}
+
+nlohmann::json reference_json(const PartReport& r) {
+  const ReferenceInfo& reference = r.distances->reference;
+  return {{"source", reference.source},
+          {"hash", hash_hex(reference.hash)},
+          {"triangles", reference.triangles}};
+}
+
 nlohmann::json tolerance_json(const PartReport& r) {
   const ToleranceAreas& t = *r.statistics.tolerance;
   const ErrorStatistics& s = r.statistics;
@@ -63,49 +87,91 @@ std::string format_point(Vec3 p) {
   return fmt::format("({}, {}, {})", p[0], p[1], p[2]);
 }
 
-void text_header(const PartReport& r, fmt::memory_buffer& out) {
-  const DistanceSet& d = *r.distances;
-  const ErrorStatistics& s = r.statistics;
-  append(out, "part        {}\n", r.part);
-  append(out, "workpiece   {}: {} triangles, area {}\n", d.samples.source, s.triangles,
-         s.workpiece_area);
-  append(out, "nominal     {}: {} triangles\n", d.reference.source, d.reference.triangles);
-  append(out,
-         "sampling    step {} ({}), scheme {}: {} samples; {} triangles sampled at their vertices "
-         "only, {} not sampled\n",
-         d.samples.step, d.samples.step_spec,
-         d.samples.scheme == SamplingScheme::all ? "all (paper I)" : "paper-ii", s.samples,
-         s.triangles_vertex_only, s.triangles_unsampled);
-  append(out, "distance    {} search, {} triangles tested per sample, sign by {}\n\n", d.search,
-         d.triangles_tested_per_sample, d.sign_method);
+const char* verdict_word(bool fails) {
+  return fails ? "FAIL" : "PASS";
 }
 
-void text_errors(const PartReport& r, fmt::memory_buffer& out) {
-  const ErrorStatistics& s = r.statistics;
-  append(out, "error (signed: + excess material, - gouge)\n");
-  append(out, "  max         {:<24} at {}\n", s.max.value, format_point(s.max.position));
-  append(out, "  min         {:<24} at {}\n", s.min.value, format_point(s.min.position));
-  append(out, "  |d| max     {:<24} (one-sided Hausdorff)\n", s.max_abs.value);
-  append(out, "  mean        {:<24} (area-weighted over the lattice)\n", s.mean);
-  append(out, "  RMS         {}\n", s.rms);
-  append(out, "  std dev     {}\n", s.std_dev);
-  append(out, "  percentiles");
-  for (const Percentile& p : s.percentiles) append(out, "  {}%: {}", p.percent, p.value);
-  append(out, "\n  sampled area {} of {}\n", s.sampled_area, s.workpiece_area);
+std::string direction_title(const PartReport& r) {
+  return forward(r) ? "forward (workpiece samples)" : "reverse (nominal samples)";
 }
 
-void text_tolerance(const PartReport& r, fmt::memory_buffer& out) {
-  const ErrorStatistics& s = r.statistics;
-  if (!s.tolerance) return;
-  const ToleranceAreas& t = *s.tolerance;
-  append(out, "\ntolerance [{}, {}]\n", t.tolerance.lower, t.tolerance.upper);
-  append(out, "  within      area {:<22} {:6.2f} %\n", t.within, 100 * s.share(t.within));
-  append(out, "  excess      area {:<22} {:6.2f} %\n", t.excess, 100 * s.share(t.excess));
-  append(out, "  gouge       area {:<22} {:6.2f} %\n", t.gouge, 100 * s.share(t.gouge));
-  append(out, "  verdict     {}\n", t.pass ? "PASS" : "FAIL");
+void text_header(const std::vector<const PartReport*>& reports, fmt::memory_buffer& out) {
+  const PartReport& first = *reports.front();
+  const auto sampled_line = [](const PartReport& r) {
+    return fmt::format("{}: {} triangles, area {}", r.distances->samples.source,
+                       r.statistics.triangles, r.statistics.workpiece_area);
+  };
+  const auto reference_line = [](const PartReport& r) {
+    return fmt::format("{}: {} triangles", r.distances->reference.source,
+                       r.distances->reference.triangles);
+  };
+  const PartReport* forward_report = forward(first) ? &first : nullptr;
+  const PartReport* reverse_report =
+      reports.size() > 1 ? reports[1] : (forward(first) ? nullptr : &first);
+  append(out, "part        {}\n", first.part);
+  append(out, "workpiece   {}\n",
+         forward_report ? sampled_line(*forward_report) : reference_line(*reverse_report));
+  append(out, "nominal     {}\n",
+         reverse_report ? sampled_line(*reverse_report) : reference_line(*forward_report));
+  for (const PartReport* r : reports) {
+    const DistanceSet& d = *r->distances;
+    const ErrorStatistics& s = r->statistics;
+    append(out,
+           "{:<11} step {} ({}), scheme {}: {} samples of the {}; {} triangles sampled at their "
+           "vertices only, {} not sampled; {} search, {} triangles tested per sample, sign by "
+           "{}\n",
+           name_of(kDirectionNames, d.direction), d.samples.step, d.samples.step_spec,
+           d.samples.scheme == SamplingScheme::all ? "all (paper I)" : "paper-ii", s.samples,
+           forward(*r) ? "workpiece" : "nominal", s.triangles_vertex_only, s.triangles_unsampled,
+           d.search, d.triangles_tested_per_sample, d.sign_method);
+  }
+  append(out, "\n");
+}
+
+// One row of the error table: a label and each direction's value.
+template <class Value>
+void text_row(fmt::memory_buffer& out, const std::string& label,
+              const std::vector<const PartReport*>& reports, Value value) {
+  append(out, "  {:<14}", label);
+  for (const PartReport* r : reports) append(out, "{:<40}", value(*r));
+  append(out, "\n");
+}
+
+void text_errors(const std::vector<const PartReport*>& reports, fmt::memory_buffer& out) {
+  append(out, "error (signed: + material left, - gouge)\n");
+  append(out, "  {:<14}", "");
+  for (const PartReport* r : reports) append(out, "{:<40}", direction_title(*r));
+  append(out, "\n");
+  const auto number = [](double value) { return fmt::format("{}", value); };
+  text_row(out, "max", reports,
+           [&](const PartReport& r) { return number(r.statistics.max.value); });
+  text_row(out, "min", reports,
+           [&](const PartReport& r) { return number(r.statistics.min.value); });
+  text_row(out, "|d| max", reports,
+           [&](const PartReport& r) { return number(r.statistics.max_abs.value); });
+  text_row(out, "mean", reports, [&](const PartReport& r) { return number(r.statistics.mean); });
+  text_row(out, "RMS", reports, [&](const PartReport& r) { return number(r.statistics.rms); });
+  text_row(out, "std dev", reports,
+           [&](const PartReport& r) { return number(r.statistics.std_dev); });
+  const std::size_t percentiles = reports.front()->statistics.percentiles.size();
+  for (std::size_t k = 0; k < percentiles; ++k) {
+    text_row(out, fmt::format("{}%", reports.front()->statistics.percentiles[k].percent), reports,
+             [&](const PartReport& r) { return number(r.statistics.percentiles[k].value); });
+  }
+  text_row(out, "sampled area", reports, [&](const PartReport& r) {
+    return fmt::format("{} of {}", r.statistics.sampled_area, r.statistics.workpiece_area);
+  });
+  for (const PartReport* r : reports) {
+    append(out, "  {} max at {}, min at {}\n", name_of(kDirectionNames, r->distances->direction),
+           format_point(r->statistics.max.position), format_point(r->statistics.min.position));
+  }
+}
+
+void text_regions(const PartReport& r, fmt::memory_buffer& out) {
   if (r.regions.empty()) return;
-  append(out, "\nout-of-tolerance regions: {} excess, {} gouge (largest first)\n",
-         count_regions(r, RegionKind::excess), count_regions(r, RegionKind::gouge));
+  append(out, "\nout-of-tolerance regions, {}: {} excess, {} gouge (largest first)\n",
+         name_of(kDirectionNames, r.distances->direction), count_regions(r, RegionKind::excess),
+         count_regions(r, RegionKind::gouge));
   append(out, "  {:>3}  {:<6}  {:<22}  {:<22}  {}\n", "#", "kind", "area", "extreme", "at");
   for (std::size_t k = 0; k < r.regions.size() && k < r.listed_regions; ++k) {
     const ErrorRegion& e = r.regions[k];
@@ -117,22 +183,32 @@ void text_tolerance(const PartReport& r, fmt::memory_buffer& out) {
   }
 }
 
-}  // namespace
-
-PartReport make_part_report(const DistanceSet& distances, const std::optional<Tolerance>& tolerance,
-                            const HistogramOptions& histogram) {
-  PartReport report;
-  report.part = std::filesystem::path(distances.samples.source).stem().string();
-  report.distances = &distances;
-  report.statistics =
-      compute_error_statistics(distances.samples, distances.field.distance, tolerance, histogram);
-  if (tolerance) {
-    report.regions = find_error_regions(distances.samples, distances.field.distance, *tolerance);
-  }
-  return report;
+void text_tolerance(const std::vector<const PartReport*>& reports, fmt::memory_buffer& out) {
+  const std::optional<ToleranceAreas>& zone = reports.front()->statistics.tolerance;
+  if (!zone) return;
+  append(out, "\ntolerance [{}, {}]\n", zone->tolerance.lower, zone->tolerance.upper);
+  const auto share = [](const PartReport& r, double ToleranceAreas::*area) {
+    const ErrorStatistics& s = r.statistics;
+    return fmt::format("{} ({:.2f} %)", (*s.tolerance).*area, 100 * s.share((*s.tolerance).*area));
+  };
+  text_row(out, "within", reports,
+           [&](const PartReport& r) { return share(r, &ToleranceAreas::within); });
+  text_row(out, "excess", reports,
+           [&](const PartReport& r) { return share(r, &ToleranceAreas::excess); });
+  text_row(out, "gouge", reports,
+           [&](const PartReport& r) { return share(r, &ToleranceAreas::gouge); });
+  text_row(out, "verdict", reports,
+           [&](const PartReport& r) { return std::string(verdict_word(r.fails())); });
+  for (const PartReport* r : reports) text_regions(*r, out);
 }
 
-nlohmann::json report_json(const PartReport& r) {
+std::vector<const PartReport*> directions(const VerificationReport& report) {
+  std::vector<const PartReport*> reports = {&report.main};
+  if (report.reverse) reports.push_back(&*report.reverse);
+  return reports;
+}
+
+nlohmann::json direction_json(const PartReport& r) {
   const DistanceSet& d = *r.distances;
   const ErrorStatistics& s = r.statistics;
   nlohmann::json percentiles = nlohmann::json::object();
@@ -143,18 +219,9 @@ nlohmann::json report_json(const PartReport& r) {
                               {"below_range", s.histogram.below_range},
                               {"above_range", s.histogram.above_range}};
   nlohmann::json j = {{"part", r.part},
-                      {"workpiece",
-                       {{"source", d.samples.source},
-                        {"hash", hash_hex(d.samples.mesh_hash)},
-                        {"triangles", s.triangles},
-                        {"area", s.workpiece_area},
-                        {"sampled_area", s.sampled_area},
-                        {"triangles_vertex_only", s.triangles_vertex_only},
-                        {"triangles_unsampled", s.triangles_unsampled}}},
-                      {"nominal",
-                       {{"source", d.reference.source},
-                        {"hash", hash_hex(d.reference.hash)},
-                        {"triangles", d.reference.triangles}}},
+                      {"direction", name_of(kDirectionNames, d.direction)},
+                      {"workpiece", forward(r) ? sampled_json(r) : reference_json(r)},
+                      {"nominal", forward(r) ? reference_json(r) : sampled_json(r)},
                       {"sampling",
                        {{"step", d.samples.step},
                         {"step_spec", d.samples.step_spec},
@@ -182,58 +249,112 @@ nlohmann::json report_json(const PartReport& r) {
   return j;
 }
 
-std::string report_text(const PartReport& r) {
+std::string csv_quoted(const std::string& text) {
+  std::string escaped;
+  for (char c : text) escaped += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return "\"" + escaped + "\"";
+}
+
+}  // namespace
+
+PartReport make_part_report(const DistanceSet& distances, const std::optional<Tolerance>& tolerance,
+                            const HistogramOptions& histogram) {
+  PartReport report;
+  const std::string& workpiece = distances.direction == Direction::forward
+                                     ? distances.samples.source
+                                     : distances.reference.source;
+  report.part = std::filesystem::path(workpiece).stem().string();
+  report.distances = &distances;
+  report.statistics =
+      compute_error_statistics(distances.samples, distances.field.distance, tolerance, histogram);
+  if (tolerance) {
+    report.regions = find_error_regions(distances.samples, distances.field.distance, *tolerance);
+  }
+  return report;
+}
+
+std::optional<double> VerificationReport::hausdorff() const {
+  if (!reverse) return std::nullopt;
+  return std::max(main.statistics.max_abs.value, reverse->statistics.max_abs.value);
+}
+
+nlohmann::json report_json(const VerificationReport& report) {
+  nlohmann::json j = direction_json(report.main);
+  if (report.reverse) {
+    j["reverse"] = direction_json(*report.reverse);
+    j["hausdorff"] = *report.hausdorff();
+  }
+  if (report.main.statistics.tolerance) j["verdict"] = report.fails() ? "fail" : "pass";
+  return j;
+}
+
+std::string report_text(const VerificationReport& report) {
+  const std::vector<const PartReport*> reports = directions(report);
   fmt::memory_buffer out;
-  text_header(r, out);
-  text_errors(r, out);
-  text_tolerance(r, out);
+  text_header(reports, out);
+  text_errors(reports, out);
+  if (const std::optional<double> h = report.hausdorff()) {
+    append(out, "  two-sided Hausdorff distance {}\n", *h);
+  }
+  text_tolerance(reports, out);
+  if (report.main.statistics.tolerance) {
+    append(out, "\nverdict     {}\n", verdict_word(report.fails()));
+  }
   return fmt::to_string(out);
 }
 
 std::string report_csv_header() {
   return "part,workpiece,nominal,triangles,samples,area,d_max,d_min,d_mean,rms,std_dev,max_abs,"
          "p1,p5,p50,p95,p99,tol_lower,tol_upper,area_within,area_excess,area_gouge,"
-         "share_within,regions_excess,regions_gouge,verdict\n";
+         "share_within,regions_excess,regions_gouge,reverse_d_max,reverse_d_min,hausdorff,"
+         "verdict\n";
 }
 
-std::string report_csv_row(const PartReport& r) {
+// The columns describe the forward direction (the only one measured, when a reverse file is
+// reported alone); the reverse columns are empty without it.
+std::string report_csv_row(const VerificationReport& report) {
+  const PartReport& r = report.main;
   const ErrorStatistics& s = r.statistics;
-  auto quoted = [](const std::string& text) {
-    std::string escaped;
-    for (char c : text) escaped += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return "\"" + escaped + "\"";
-  };
-  std::string row = fmt::format(
-      "{},{},{},{},{},{},{},{},{},{},{},{}", quoted(r.part), quoted(r.distances->samples.source),
-      quoted(r.distances->reference.source), s.triangles, s.samples, s.workpiece_area, s.max.value,
-      s.min.value, s.mean, s.rms, s.std_dev, s.max_abs.value);
+  const DistanceSet& d = *r.distances;
+  const bool fwd = forward(r);
+  std::string row = fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}", csv_quoted(r.part),
+                                csv_quoted(fwd ? d.samples.source : d.reference.source),
+                                csv_quoted(fwd ? d.reference.source : d.samples.source),
+                                s.triangles, s.samples, s.workpiece_area, s.max.value, s.min.value,
+                                s.mean, s.rms, s.std_dev, s.max_abs.value);
   for (const Percentile& p : s.percentiles) row += fmt::format(",{}", p.value);
   if (s.tolerance) {
     const ToleranceAreas& t = *s.tolerance;
-    row +=
-        fmt::format(",{},{},{},{},{},{},{},{},{}", t.tolerance.lower, t.tolerance.upper, t.within,
-                    t.excess, t.gouge, s.share(t.within), count_regions(r, RegionKind::excess),
-                    count_regions(r, RegionKind::gouge), t.pass ? "pass" : "fail");
+    row += fmt::format(",{},{},{},{},{},{},{},{}", t.tolerance.lower, t.tolerance.upper, t.within,
+                       t.excess, t.gouge, s.share(t.within), count_regions(r, RegionKind::excess),
+                       count_regions(r, RegionKind::gouge));
   } else {
-    row += ",,,,,,,,,";
+    row += ",,,,,,,,";
   }
+  if (report.reverse) {
+    row += fmt::format(",{},{},{}", report.reverse->statistics.max.value,
+                       report.reverse->statistics.min.value, *report.hausdorff());
+  } else {
+    row += ",,,";
+  }
+  row += s.tolerance ? (report.fails() ? ",fail" : ",pass") : ",";
   return row + "\n";
 }
 
-std::string format_report(const PartReport& r, ReportFormat format, bool csv_header) {
+std::string format_report(const VerificationReport& report, ReportFormat format, bool csv_header) {
   switch (format) {
     case ReportFormat::json:
-      return report_json(r).dump(2) + "\n";
+      return report_json(report).dump(2) + "\n";
     case ReportFormat::csv:
-      return (csv_header ? report_csv_header() : "") + report_csv_row(r);
+      return (csv_header ? report_csv_header() : "") + report_csv_row(report);
     case ReportFormat::text:
       break;
   }
-  return report_text(r);
+  return report_text(report);
 }
 
-int verdict_status(const PartReport& r) {
-  return r.statistics.tolerance && !r.statistics.tolerance->pass ? 1 : 0;
+int verdict_status(const VerificationReport& report) {
+  return report.fails() ? 1 : 0;
 }
 
 }  // namespace ncv

@@ -1,10 +1,12 @@
-// The stats report: ErrorStatistics and the out-of-tolerance regions of one part as a
-// readable text table, as JSON (stable keys, documented in docs/REPORTS.md) or as CSV
-// (one header line and one row, so the rows of many parts concatenate into one table).
-// Numbers are written in their shortest round-tripping form.
+// The stats report: ErrorStatistics and the out-of-tolerance regions of one part, in one or
+// both directions (distance/direction.hpp), as a readable text table, as JSON (stable keys,
+// documented in docs/REPORTS.md) or as CSV (one header line and one row, so the rows of many
+// parts concatenate into one table). Numbers are written in their shortest round-tripping
+// form.
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,29 +17,45 @@
 
 namespace ncv {
 
+// The report of one direction.
 struct PartReport {
   std::string part;  // the workpiece's file stem
   const DistanceSet* distances = nullptr;
   ErrorStatistics statistics;
   std::vector<ErrorRegion> regions;  // empty without a tolerance
   std::size_t listed_regions = 20;   // regions written out (all are counted)
+
+  // Within the tolerance zone at every sample (false without a tolerance).
+  bool fails() const { return statistics.tolerance && !statistics.tolerance->pass; }
 };
 
 PartReport make_part_report(const DistanceSet& distances, const std::optional<Tolerance>& tolerance,
                             const HistogramOptions& histogram);
 
-nlohmann::json report_json(const PartReport& report);
-std::string report_text(const PartReport& report);
+// A part's report: `main` is the forward direction, or the only direction measured; `reverse`
+// is there when both were. The part fails when either direction does.
+struct VerificationReport {
+  PartReport main;
+  std::optional<PartReport> reverse;
+
+  bool fails() const { return main.fails() || (reverse && reverse->fails()); }
+  // The two-sided Hausdorff distance: the larger max |d| of the two directions.
+  std::optional<double> hausdorff() const;
+};
+
+nlohmann::json report_json(const VerificationReport& report);
+std::string report_text(const VerificationReport& report);
 std::string report_csv_header();
-std::string report_csv_row(const PartReport& report);
+std::string report_csv_row(const VerificationReport& report);
 
 enum class ReportFormat { text, json, csv };
 inline constexpr EnumName<ReportFormat> kReportFormatNames[] = {
     {ReportFormat::text, "text"}, {ReportFormat::json, "json"}, {ReportFormat::csv, "csv"}};
 // The whole report in one format; csv_header adds the CSV header line.
-std::string format_report(const PartReport& report, ReportFormat format, bool csv_header = true);
+std::string format_report(const VerificationReport& report, ReportFormat format,
+                          bool csv_header = true);
 
 // The exit status the verdict implies: 0 pass or no tolerance, 1 out of tolerance.
-int verdict_status(const PartReport& report);
+int verdict_status(const VerificationReport& report);
 
 }  // namespace ncv

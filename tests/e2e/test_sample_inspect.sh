@@ -6,7 +6,7 @@ write_box_stl box.stl 10 20 5
 
 check "sample writes a samples file" "$NCVERIFY" -q sample box.stl -o box.samples --step 1
 check "inspect reads it" "$NCVERIFY" inspect box.samples -o header.txt
-check "header names the kind" grep -q "SMPL (samples file), format version 1" header.txt
+check "header names the kind" grep -q "SMPL (samples file), format version 2" header.txt
 "$NCVERIFY" inspect box.samples --json >header.json
 check "JSON header has the sample count" /usr/bin/python3 -c "
 import json; h = json.load(open('header.json')); assert h['meta']['sampling']['samples'] > 100"
@@ -19,7 +19,7 @@ check "CSV columns" grep -q "^index,positions_x,positions_y,positions_z,owner,la
 check "stdin to stdout pipeline gives the same samples" /usr/bin/python3 -c "
 import json
 a = json.load(open('header.json'))['meta']; b = json.load(open('piped.json'))['meta']
-assert a['sampling'] == b['sampling'] and a['workpiece']['hash'] == b['workpiece']['hash']"
+assert a['sampling'] == b['sampling'] and a['mesh']['hash'] == b['mesh']['hash']"
 check "logs go to stderr only" test -z "$("$NCVERIFY" sample box.stl -o quiet.samples --step 1 2>/dev/null)"
 
 # The numpy snippet of docs/FORMATS.md reads the file and finds the lattice identity.

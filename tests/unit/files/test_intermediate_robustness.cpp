@@ -21,10 +21,10 @@ namespace {
 // A container of `kind` whose metadata is `meta_text` and whose sections are empty (at
 // offset 1024, where the zero padding after the metadata ends): the header, the JSON, the
 // padding and the XXH3 trailer, sized and hashed correctly.
-ncv::Buffer<char> sealed_container(const char tag[4], const std::string& meta_text) {
+ncv::Buffer<char> sealed_container(const char tag[4], std::uint32_t version,
+                                   const std::string& meta_text) {
   REQUIRE(64 + meta_text.size() <= 1024);
   ncv::Buffer<char> bytes(1024 + 8, 0);
-  const std::uint32_t version = 1;
   const std::uint64_t meta_bytes = meta_text.size();
   const std::uint64_t file_bytes = bytes.size();
   std::memcpy(bytes.data(), "NCVERIFY", 8);
@@ -40,8 +40,9 @@ ncv::Buffer<char> sealed_container(const char tag[4], const std::string& meta_te
 
 std::string section_table_refusal(const std::string& entry) {
   try {
-    Container::parse(sealed_container("SMPL", R"({"sections": [)" + entry + "]}"), "x.samples",
-                     FileKind::samples, kSamplesFormatVersion);
+    Container::parse(
+        sealed_container("SMPL", kSamplesFormatVersion, R"({"sections": [)" + entry + "]}"),
+        "x.samples", FileKind::samples, kSamplesFormatVersion);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -82,12 +83,12 @@ TEST_CASE("a mesh hash of the wrong JSON type is bad input", "[intermediate-file
   for (const std::string hash : {"5", "null", "[1]"}) {
     INFO(hash);
     const ncv::Buffer<char> samples =
-        sealed_container("SMPL", meta_with_hash("workpiece", "workpiece", hash));
+        sealed_container("SMPL", kSamplesFormatVersion, meta_with_hash("mesh", "mesh", hash));
     CHECK_THROWS_MATCHES(load_sample_set(Container::parse(samples, "x.samples", FileKind::samples,
                                                           kSamplesFormatVersion)),
-                         InputError, Catch::Message("x.samples: workpiece hash is malformed"));
+                         InputError, Catch::Message("x.samples: mesh hash is malformed"));
     const ncv::Buffer<char> grid =
-        sealed_container("GRID", meta_with_hash("nominal", "nominal", hash));
+        sealed_container("GRID", kGridFormatVersion, meta_with_hash("nominal", "nominal", hash));
     CHECK_THROWS_MATCHES(load_indexed_reference(
                              Container::parse(grid, "x.grid", FileKind::grid, kGridFormatVersion)),
                          InputError, Catch::Message("x.grid: nominal hash is malformed"));

@@ -119,7 +119,7 @@ TEST_CASE("corrupted, truncated and foreign files are refused", "[samples-file]"
   }
   SECTION("newer format version") {
     std::vector<char> newer = bytes;
-    newer[12] = 2;
+    newer[12] = static_cast<char>(kSamplesFormatVersion + 1);
     write_bytes(bad, newer);
     CHECK_THAT(refusal(bad), Catch::Contains("newer"));
   }

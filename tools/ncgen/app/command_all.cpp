@@ -77,6 +77,41 @@ nlohmann::json box_set(const fs::path& out) {
   return parts;
 }
 
+// Nominals with a feature the workpiece lacks, which only the reverse direction measures:
+// a slot never cut (forward max = half its width, reverse max = its depth) and a rib cut off
+// (forward min = -half its width, reverse min = -its height), all exact in float.
+nlohmann::json missing_feature_set(const fs::path& out) {
+  const Vec3 size{100, 60, 30};
+  const double centre = 30;
+  nlohmann::json parts = nlohmann::json::array();
+  const auto add = [&](const ncv::Mesh& mesh, const std::string& file, const std::string& nominal,
+                       const std::string& what, std::array<double, 4> errors) {
+    nlohmann::json json = save_mesh(mesh, out / file, "ncgen " + what);
+    json["role"] = file == nominal ? "nominal" : "workpiece";
+    json["nominal"] = nominal;
+    json["description"] = what;
+    if (file != nominal) {
+      json["expected_min_error"] = errors[0];
+      json["expected_max_error"] = errors[1];
+      json["expected_reverse_min_error"] = errors[2];
+      json["expected_reverse_max_error"] = errors[3];
+    }
+    parts.push_back(json);
+  };
+  const double slot_width = 1, slot_depth = 10, rib_width = 2, rib_height = 5;
+  add(grooved_box(size, centre, slot_width, slot_depth), "slot_nominal.stl", "slot_nominal.stl",
+      "box 100 x 60 x 30 mm with a slot 1 mm wide and 10 mm deep along x", {});
+  add(box_with_top_lines(size, {centre - slot_width / 2, centre, centre + slot_width / 2}),
+      "slot_uncut.stl", "slot_nominal.stl", "the box without its slot",
+      {0, slot_width / 2, 0, slot_depth});
+  add(grooved_box(size, centre, rib_width, -rib_height), "rib_nominal.stl", "rib_nominal.stl",
+      "box 100 x 60 x 30 mm with a rib 2 mm wide and 5 mm high along x", {});
+  add(box_with_top_lines(size, {centre - rib_width / 2, centre, centre + rib_width / 2}),
+      "rib_missing.stl", "rib_nominal.stl", "the box without its rib",
+      {-rib_width / 2, 0, -rib_height, 0});
+  return parts;
+}
+
 }  // namespace
 
 void add_all_command(CLI::App& app, const GlobalOptions& global) {
@@ -98,6 +133,7 @@ void add_all_command(CLI::App& app, const GlobalOptions& global) {
     fs::create_directories(out);
     nlohmann::json parts = mould_core_set(out, global.seed, size);
     for (const nlohmann::json& box : box_set(out)) parts.push_back(box);
+    for (const nlohmann::json& part : missing_feature_set(out)) parts.push_back(part);
     write_json({{"generator", "ncgen"},
                 {"seed", global.seed},
                 {"size", options->size},

@@ -87,4 +87,21 @@ ncv::Mesh scalloped_box(Vec3 size, double radius, double stepover, int segments)
   return prism(0, size[0], profile, 0);
 }
 
+ncv::Mesh grooved_box(Vec3 size, double centre_y, double width, double depth) {
+  const double y0 = centre_y - width / 2, y1 = centre_y + width / 2;
+  if (!(y0 > 0 && y1 < size[1] && depth < size[2] && width > 0)) {
+    throw std::invalid_argument("the groove must lie inside the box top");
+  }
+  const double top = size[2], floor = top - depth;
+  return prism(0, size[0],
+               {{0, top}, {y0, top}, {y0, floor}, {y1, floor}, {y1, top}, {size[1], top}}, 0);
+}
+
+ncv::Mesh box_with_top_lines(Vec3 size, const std::vector<double>& lines_y) {
+  std::vector<ProfilePoint> profile = {{0, size[2]}};
+  for (double y : lines_y) profile.push_back({y, size[2]});
+  profile.push_back({size[1], size[2]});
+  return prism(0, size[0], profile, 0);
+}
+
 }  // namespace ncv::gen
