@@ -4,12 +4,12 @@ namespace ncv {
 
 std::vector<Vec3> sample_normals(const SampleSet& samples) {
   const Mesh& mesh = samples.mesh;
-  std::vector<Vec3> vertex_normals(mesh.vertex_count());
+  std::vector<Vec3> vertex_normals(mesh.vertex_count(), Vec3(0, 0, 0));
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     const Vec3 weighted = area_vector(mesh, t);  // |cross| = twice the area
     for (std::uint32_t v : mesh.triangles[t]) vertex_normals[v] += weighted;
   }
-  std::vector<Vec3> normals(samples.sample_count());
+  std::vector<Vec3> normals(samples.sample_count(), Vec3(0, 0, 0));
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
     if (samples.vertex_sample[v] != kNoSample) {
       normals[samples.vertex_sample[v]] = normalized(vertex_normals[v]);
