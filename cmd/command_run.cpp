@@ -32,6 +32,9 @@ void add_run_command(CLI::App& app, CommandContext& context) {
       "Measure the workpiece against the nominal only (not the nominal against the "
       "workpiece: a feature the workpiece lacks can then pass)");
   add_enum_option(*sub, "--format", job->format, kReportFormatNames, "Report on stdout");
+  add_enum_option(*sub, "--keep", job->keep, kKeepNames,
+                  "What stays in the output folder: every step's file, the reports and "
+                  "pictures only, or nothing (the report on stdout)");
   sub->add_option("--timings", job->timings,
                   "Also write each phase's wall time and the peak memory as JSON (benchmarks)");
   sub->callback([job, &context] { context.exit_status = run_verification(*job); });

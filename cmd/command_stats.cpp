@@ -12,7 +12,10 @@ void add_stats_command(CLI::App& app, CommandContext& context) {
       "stats", "Error measures of a distance file; exit 1 when out of tolerance");
   sub->add_option("distances", job->distances,
                   "Distance file from `distance` (- = stdin), and optionally the same part's "
-                  "reverse distance file (`distance --reverse`)");
+                  "reverse distance file (`distance --reverse`); or every shard's of each");
+  sub->add_option("--samples", job->samples,
+                  "The samples file of the distance file, when it is not where the distance "
+                  "file says");
   add_enum_option(*sub, "--format", job->format, kReportFormatNames, "Report format");
   sub->add_flag(
       "--no-header", [job](std::int64_t) { job->csv_header = false; },

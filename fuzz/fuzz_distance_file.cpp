@@ -1,7 +1,8 @@
 // Distance files (kind DIST) as `stats` and `colorize` read them: Container::parse,
-// load_distance_set, then the report (statistics, histogram, regions, text, JSON and CSV)
-// and the coloured PLY of both the workpiece and the lattice, which trust what the loader
-// accepted.
+// load_distance_records, the samples the file holds (the corpus's files were made from
+// standard input, so they embed them; a linked samples file is not found and refused), then the
+// report (statistics, histogram, regions, text, JSON and CSV) and the coloured PLY of both the
+// workpiece and the lattice, which trust what the loader accepted.
 #include <sstream>
 
 #include "files/container.hpp"
@@ -15,9 +16,11 @@
 namespace {
 
 void read_distances(ncv::Buffer<char> bytes) {
-  const ncv::Container c = ncv::Container::parse(
-      std::move(bytes), "fuzz.dist", ncv::FileKind::distances, ncv::kDistancesFormatVersion);
-  const ncv::DistanceSet set = ncv::load_distance_set(c);
+  ncv::Container c = ncv::Container::parse(std::move(bytes), "fuzz.dist", ncv::FileKind::distances,
+                                           ncv::kDistancesFormatVersion);
+  ncv::DistanceRecords records = ncv::load_distance_records(std::move(c), "fuzz.dist");
+  ncv::SampleSet samples = ncv::load_linked_samples(records, "", false);
+  const ncv::DistanceSet set = ncv::assemble_distance_set(std::move(records), std::move(samples));
   const ncv::Tolerance tolerance{-0.05, 0.1};
   const ncv::VerificationReport report{
       ncv::make_part_report(set, tolerance, ncv::HistogramOptions{}), std::nullopt};

@@ -66,10 +66,12 @@ cp "$corpus/mesh/tet_ascii.stl" tet.stl
 "$ncverify" -q grid-build box.stl -o "$corpus/grid_file/box.grid"
 "$ncverify" -q grid-build sheet.stl -o "$corpus/grid_file/open_sheet.grid"
 "$ncverify" -q grid-build tet.stl -o "$corpus/grid_file/tet.grid" --cell 0.3
-"$ncverify" -q distance "$corpus/samples_file/box.samples" "$corpus/grid_file/tet.grid" \
-  -o "$corpus/distance_file/box_vs_tet.dist"
-"$ncverify" -q distance "$corpus/samples_file/tet_paper_ii.samples" "$corpus/grid_file/open_sheet.grid" \
-  -o "$corpus/distance_file/tet_vs_sheet.dist"
+# Samples from standard input: the distance files hold them (a linked samples file would not
+# be found from the fuzzer's buffer).
+"$ncverify" -q distance - "$corpus/grid_file/tet.grid" -o "$corpus/distance_file/box_vs_tet.dist" \
+  <"$corpus/samples_file/box.samples"
+"$ncverify" -q distance - "$corpus/grid_file/open_sheet.grid" --reverse \
+  -o "$corpus/distance_file/tet_vs_sheet.dist" <"$corpus/samples_file/tet_paper_ii.samples"
 
 printf '%s' '0.1' >"$corpus/tolerance/symmetric"
 printf '%s' '-0.05:0.1' >"$corpus/tolerance/zone"

@@ -72,7 +72,6 @@ class SignedDistanceJob {
                                  ? worker.search->closest(p, worker.counters)
                                  : brute_force_closest(nominal_.corners(), p, worker.counters);
       field.distance[i] = signed_value(i, p, hit);
-      field.closest_point[i] = nominal_.to_global(hit.point);
       field.closest_face[i] = hit.triangle;
     }
   }
@@ -140,7 +139,6 @@ DistanceField measure(const ReferenceSurface& nominal, const SearchIndex* grid,
   const std::size_t n = points.size();
   DistanceField field;
   field.distance.resize(n);
-  field.closest_point.resize(n);
   field.closest_face.resize(n);
 
   SignedDistanceJob job(nominal, grid, points, sample_normals,

@@ -40,8 +40,7 @@ inline constexpr std::size_t kDistanceBlockSize = 512;
 
 // Buffers: filled by the parallel loop without a serial zeroing pass first (buffer.hpp).
 struct DistanceField {
-  Buffer<double> distance;     // signed
-  Buffer<Vec3> closest_point;  // on the nominal, global frame
+  Buffer<double> distance;  // signed
   Buffer<std::uint32_t> closest_face;
 };
 

@@ -38,6 +38,8 @@ void store(char* at, T value) {
 std::size_t dtype_width(const std::string& dtype) {
   if (dtype == "<f8" || dtype == "<u8") return 8;
   if (dtype == "<u4") return 4;
+  if (dtype == "<u2") return 2;
+  if (dtype == "<u1") return 1;
   return 0;
 }
 
@@ -104,7 +106,7 @@ void ContainerWriter::add_raw(std::string name, const char* dtype, std::size_t w
   sections_.push_back({std::move(name), dtype, width, data, bytes, std::move(shape)});
 }
 
-void ContainerWriter::write(OutputFile& out) {
+std::uint64_t ContainerWriter::write(OutputFile& out) {
   // The section offsets depend on the metadata's length, which contains them: iterate
   // until the start of the data no longer moves (two or three rounds).
   std::string meta_text;
@@ -162,9 +164,14 @@ void ContainerWriter::write(OutputFile& out) {
   }
   const std::uint64_t hash = XXH3_64bits_digest(state);
   out.write(&hash, sizeof hash);
+  return hash;
 }
 
 // ---------------------------------------------------------------- reading
+
+std::uint64_t Container::content_hash() const {
+  return load<std::uint64_t>(bytes_.data() + bytes_.size() - kTrailerBytes);
+}
 
 Container Container::read(const std::string& path, FileKind kind, std::uint32_t version) {
   return parse(read_input_bytes(path), input_name(path), kind, version);

@@ -17,6 +17,8 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
+#include <deque>
 #include <nlohmann/json.hpp>
 #include <span>
 #include <string>
@@ -33,9 +35,9 @@ namespace ncv {
 enum class FileKind { samples, grid, distances };
 
 // The format version this build writes and reads, per kind.
-inline constexpr std::uint32_t kSamplesFormatVersion = 2;
+inline constexpr std::uint32_t kSamplesFormatVersion = 3;
 inline constexpr std::uint32_t kGridFormatVersion = 1;
-inline constexpr std::uint32_t kDistancesFormatVersion = 2;
+inline constexpr std::uint32_t kDistancesFormatVersion = 3;
 std::uint32_t format_version(FileKind kind);
 
 std::string kind_tag(FileKind kind);          // "SMPL", ...
@@ -46,6 +48,14 @@ constexpr const char* dtype_of();
 template <>
 constexpr const char* dtype_of<double>() {
   return "<f8";
+}
+template <>
+constexpr const char* dtype_of<std::uint8_t>() {
+  return "<u1";
+}
+template <>
+constexpr const char* dtype_of<std::uint16_t>() {
+  return "<u2";
 }
 template <>
 constexpr const char* dtype_of<std::uint32_t>() {
@@ -67,7 +77,15 @@ class ContainerWriter {
     add_raw(std::move(name), dtype_of<T>(), sizeof(T), data.data(), data.size_bytes(),
             std::move(shape));
   }
-  void write(OutputFile& out);
+  // Keeps `data` until write(), for a section made on the fly, and returns a view of it.
+  template <class T>
+  std::span<const T> keep(const std::vector<T>& data) {
+    std::vector<char>& bytes = kept_.emplace_back(data.size() * sizeof(T));
+    std::memcpy(bytes.data(), data.data(), bytes.size());
+    return {reinterpret_cast<const T*>(bytes.data()), data.size()};
+  }
+  // Returns the content hash (the trailer) of what it wrote.
+  std::uint64_t write(OutputFile& out);
 
  private:
   struct Section {
@@ -84,6 +102,7 @@ class ContainerWriter {
   std::uint32_t version_;
   nlohmann::json meta_;
   std::vector<Section> sections_;
+  std::deque<std::vector<char>> kept_;  // a deque: a kept vector never moves
 };
 
 // A parsed, verified container: magic, kind, version, sizes and content hash all checked.
@@ -100,6 +119,11 @@ class Container {
   const nlohmann::json& meta() const { return meta_; }
   const std::string& source() const { return source_; }
   std::uint64_t file_bytes() const { return bytes_.size(); }
+  // The XXH3-64 of the file's content (its trailer): what a distance file names its samples
+  // file by.
+  std::uint64_t content_hash() const;
+  // The dtype of section `name` (the section must exist).
+  const std::string& dtype(const std::string& name) const { return section(name).dtype; }
 
   bool has(const std::string& name) const;
   // Copies section `name`, checking its dtype and that it holds `rows` values, into a

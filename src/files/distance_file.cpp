@@ -1,12 +1,16 @@
 #include "files/distance_file.hpp"
 
-#include <cmath>
+#include <fmt/format.h>
 
-#include "files/mesh_arrays.hpp"
-#include "files/samples_file.hpp"
+#include <cmath>
+#include <filesystem>
+
+#include "util/input_bytes.hpp"
 
 namespace ncv {
 namespace {
+
+namespace fs = std::filesystem;
 
 nlohmann::json box_json(const BoundingBox& box) {
   return {{"bbox_min", {box.min[0], box.min[1], box.min[2]}},
@@ -35,8 +39,10 @@ std::string string_field(const Container& c, const std::string& pointer) {
   return value.get<std::string>();
 }
 
-nlohmann::json distance_meta(const DistanceSet& set) {
+nlohmann::json distance_meta(const DistanceSet& set, const std::optional<SamplesLink>& link) {
   nlohmann::json meta = sample_set_meta(set.samples);
+  meta["samples_file"] = link ? nlohmann::json{{"path", link->path}, {"hash", hash_hex(link->hash)}}
+                              : nlohmann::json{{"embedded", true}};
   nlohmann::json reference = {{"source", set.reference.source},
                               {"hash", hash_hex(set.reference.hash)},
                               {"triangles", set.reference.triangles}};
@@ -45,58 +51,142 @@ nlohmann::json distance_meta(const DistanceSet& set) {
   meta["distance"] = {{"direction", name_of(kDirectionNames, set.direction)},
                       {"sign_method", set.sign_method},
                       {"search", set.search},
-                      {"triangles_tested_per_sample", set.triangles_tested_per_sample}};
-  meta["records"]["sections"] = {"positions", "owner",         "lattice_i",   "lattice_j",
-                                 "distance",  "closest_point", "closest_face"};
+                      {"triangles_tested", set.triangles_tested}};
+  meta["records"] = {{"name", "samples"},
+                     {"count", set.samples.sample_count()},
+                     {"first", set.samples.first_sample},
+                     {"sections", {"distance", "closest_face"}}};
   return meta;
+}
+
+// Candidates for a linked samples file, in order: the path the caller gave, the link's path
+// from the distance file's folder, the link's path from the current folder.
+std::vector<std::string> samples_candidates(const DistanceRecords& r, const std::string& given) {
+  if (!given.empty()) return {given};
+  const std::string link = string_field(r.container, "/samples_file/path");
+  std::vector<std::string> candidates;
+  if (r.path != "-" && fs::path(link).is_relative()) {
+    candidates.push_back((fs::path(r.path).parent_path() / link).string());
+  }
+  candidates.push_back(link);
+  return candidates;
 }
 
 }  // namespace
 
-void write_distance_file(const DistanceSet& set, OutputFile& out) {
+std::optional<SamplesLink> link_samples(const std::string& samples_path, std::uint64_t hash,
+                                        const std::string& distance_path) {
+  if (samples_path == "-") return std::nullopt;
+  if (distance_path == "-") return SamplesLink{samples_path, hash};
+  const fs::path samples = fs::absolute(samples_path).lexically_normal();
+  const fs::path folder = fs::absolute(distance_path).parent_path().lexically_normal();
+  const fs::path relative = samples.lexically_relative(folder);
+  return SamplesLink{(relative.empty() ? samples : relative).string(), hash};
+}
+
+void write_distance_file(const DistanceSet& set, const std::optional<SamplesLink>& samples,
+                         OutputFile& out) {
   const std::uint64_t S = set.samples.sample_count();
-  ContainerWriter writer(FileKind::distances, kDistancesFormatVersion, distance_meta(set));
-  add_sample_sections(writer, set.samples);
+  ContainerWriter writer(FileKind::distances, kDistancesFormatVersion, distance_meta(set, samples));
+  if (!samples) add_sample_sections(writer, set.samples);
   writer.add<double>("distance", set.field.distance, {S});
-  writer.add<double>("closest_point", flat_coordinates(set.field.closest_point), {S, 3});
   writer.add<std::uint32_t>("closest_face", set.field.closest_face, {S});
   writer.write(out);
 }
 
-DistanceSet read_distance_file(const std::string& path) {
-  return load_distance_set(Container::read(path, FileKind::distances, kDistancesFormatVersion));
+DistanceRecords read_distance_records(const std::string& path) {
+  return load_distance_records(Container::read(path, FileKind::distances, kDistancesFormatVersion),
+                               path);
 }
 
-DistanceSet load_distance_set(const Container& c) {
-  DistanceSet set;
-  set.samples = load_sample_set(c);
-  const std::uint64_t S = set.samples.sample_count();
-  set.reference.source = string_field(c, "/reference/source");
-  set.reference.hash = parse_hash_hex(string_field(c, "/reference/hash"), c);
-  set.reference.triangles = c.count("/reference/triangles");
-  set.reference.box = box_from(c, "/reference");
+DistanceRecords load_distance_records(Container container, const std::string& path) {
+  DistanceRecords r(std::move(container), path);
+  const Container& c = r.container;
   const auto direction = parse_name(kDirectionNames, string_field(c, "/distance/direction"));
   if (!direction) c.fail("metadata field /distance/direction is neither forward nor reverse");
-  set.direction = *direction;
-  set.sign_method = string_field(c, "/distance/sign_method");
-  set.search = string_field(c, "/distance/search");
-  if (!c.field("/distance/triangles_tested_per_sample").is_number()) {
-    c.fail("metadata field /distance/triangles_tested_per_sample is not a number");
+  r.direction = *direction;
+  r.sampling = sampling_settings(c);
+  r.shard = r.sampling.shard;
+  r.mesh_hash = parse_hash_hex(string_field(c, "/mesh/hash"), c);
+  r.total_samples = c.count("/sampling/samples");
+  r.first_sample = c.count("/records/first");
+  const std::uint64_t S = c.count("/records/count");
+  const SampleRange range =
+      r.shard ? shard_range(r.total_samples, *r.shard) : SampleRange{0, r.total_samples};
+  if (r.first_sample != range.begin || S != range.size()) {
+    c.fail("its records are not the samples of its shard");
   }
-  set.triangles_tested_per_sample = c.field("/distance/triangles_tested_per_sample").get<double>();
-
-  set.field.distance = c.get<double, Buffer<double>>("distance", S);
-  set.field.closest_point = c.get_rows<double, Vec3, Buffer<Vec3>>("closest_point", S);
-  set.field.closest_face = c.get<std::uint32_t, Buffer<std::uint32_t>>("closest_face", S);
+  r.reference.source = string_field(c, "/reference/source");
+  r.reference.hash = parse_hash_hex(string_field(c, "/reference/hash"), c);
+  r.reference.triangles = c.count("/reference/triangles");
+  r.reference.box = box_from(c, "/reference");
+  r.sign_method = string_field(c, "/distance/sign_method");
+  r.search = string_field(c, "/distance/search");
+  r.triangles_tested = c.count("/distance/triangles_tested");
+  r.distance = c.get<double, Buffer<double>>("distance", S);
+  r.closest_face = c.get<std::uint32_t, Buffer<std::uint32_t>>("closest_face", S);
   for (std::uint64_t s = 0; s < S; ++s) {
-    if (!std::isfinite(set.field.distance[s]) || !is_finite(set.field.closest_point[s])) {
-      c.fail("a distance or closest point is not finite");
-    }
-    if (set.field.closest_face[s] >= set.reference.triangles) {
+    if (!std::isfinite(r.distance[s])) c.fail("a distance is not finite");
+    if (r.closest_face[s] >= r.reference.triangles) {
       c.fail("a closest face lies outside the reference surface");
     }
   }
+  if (!c.meta().contains("samples_file")) c.fail("it does not say where its samples are");
+  return r;
+}
+
+SampleSet load_linked_samples(const DistanceRecords& r, const std::string& samples_path,
+                              bool whole) {
+  const Container& c = r.container;
+  SampleSet samples;
+  if (c.meta()["samples_file"].contains("embedded")) {
+    samples = load_sample_set(c, whole);
+  } else {
+    const std::uint64_t hash = parse_hash_hex(string_field(c, "/samples_file/hash"), c);
+    std::optional<Container> found;
+    for (const std::string& candidate : samples_candidates(r, samples_path)) {
+      std::error_code error;
+      if (!fs::exists(candidate, error)) continue;
+      found = Container::read(candidate, FileKind::samples, kSamplesFormatVersion);
+      if (found->content_hash() != hash) {
+        throw InputError(candidate, fmt::format("is not the samples file {} was measured from "
+                                                "(its content differs); sample again",
+                                                input_name(r.path)));
+      }
+      break;
+    }
+    if (!found) {
+      c.fail(fmt::format("its samples file '{}' is not there; give it with --samples",
+                         string_field(c, "/samples_file/path")));
+    }
+    samples = load_sample_set(*found, whole);
+  }
+  if (samples.mesh_hash != r.mesh_hash || samples.total_samples != r.total_samples) {
+    c.fail("its samples file holds another mesh or lattice");
+  }
+  return samples;
+}
+
+DistanceSet assemble_distance_set(DistanceRecords r, SampleSet samples) {
+  if (samples.first_sample != r.first_sample || samples.sample_count() != r.distance.size()) {
+    r.container.fail("its records do not match its samples");
+  }
+  DistanceSet set;
+  set.direction = r.direction;
+  set.samples = std::move(samples);
+  set.field.distance = std::move(r.distance);
+  set.field.closest_face = std::move(r.closest_face);
+  set.reference = std::move(r.reference);
+  set.sign_method = std::move(r.sign_method);
+  set.search = std::move(r.search);
+  set.triangles_tested = r.triangles_tested;
   return set;
+}
+
+DistanceSet read_distance_file(const std::string& path, const std::string& samples_path) {
+  DistanceRecords records = read_distance_records(path);
+  SampleSet samples = load_linked_samples(records, samples_path, false);
+  return assemble_distance_set(std::move(records), std::move(samples));
 }
 
 }  // namespace ncv

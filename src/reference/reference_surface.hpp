@@ -2,7 +2,7 @@
 //
 // Local frame: the mesh is translated so that its bounding-box centre is the origin. A part
 // modelled 1,000,000 mm from the world origin then keeps all the digits of its small
-// coordinates; queries are translated in (to_local) and closest points back (to_global).
+// coordinates; queries are translated in (to_local).
 // The translation is exact whenever query and part are within a factor two of each other
 // in every coordinate (Sterbenz), which covers any sample near the part.
 //
@@ -49,7 +49,6 @@ class ReferenceSurface {
   std::size_t triangle_count() const { return corners_.size(); }
   Vec3 origin() const { return origin_; }
   Vec3 to_local(Vec3 global) const { return global - origin_; }
-  Vec3 to_global(Vec3 local) const { return local + origin_; }
 
   const Mesh& local_mesh() const { return local_; }
   std::span<const TriangleCorners> corners() const { return corners_; }

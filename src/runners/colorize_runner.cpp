@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "files/distance_job.hpp"
 #include "render/ply_writer.hpp"
 #include "render/svg_legend.hpp"
 #include "util/error.hpp"
@@ -82,7 +83,11 @@ void write_colored(const DistanceSet& distances, const ColorizeOptions& options,
 }
 
 void run_colorize(const ColorizeJob& job) {
-  write_colored(read_distance_file(job.distances), job.options, job.output, job.legend_svg);
+  const PartDistances part = read_part_distances(job.distances, job.samples);
+  if (part.reverse) {
+    throw UsageError("colorize paints one direction: give the forward or the reverse files");
+  }
+  write_colored(part.main, job.options, job.output, job.legend_svg);
 }
 
 }  // namespace ncv

@@ -38,9 +38,10 @@ std::string legend_svg(const ColoredSurface& colored);
 void write_colored(const DistanceSet& distances, const ColorizeOptions& options,
                    const std::string& ply_path, const std::string& legend_path);
 
-// `ncverify colorize DIST -o OUT.ply`.
+// `ncverify colorize DIST... -o OUT.ply`.
 struct ColorizeJob {
-  std::string distances;
+  std::vector<std::string> distances;  // one direction: one file, or every shard of its job
+  std::string samples;                 // the samples file of a single distance file
   std::string output;
   std::string legend_svg;  // empty: none
   ColorizeOptions options;

@@ -129,7 +129,7 @@ DistanceSet measure_distances(SampleSet samples, const IndexedReference& referen
                       bounding_box(reference.mesh)};
   result.sign_method = std::string(name_of(kSignMethodNames, method));
   result.search = options.brute_force ? "brute-force" : "grid";
-  result.triangles_tested_per_sample = statistics.triangles_per_query();
+  result.triangles_tested = statistics.triangles_tested;
   return result;
 }
 
@@ -140,18 +140,21 @@ void log_distances(const DistanceSet& d, double seconds) {
       "search, {:.1f} triangles tested per sample; sign by {}",
       name_of(kDirectionNames, d.direction), d.samples.sample_count(), d.samples.source,
       d.reference.triangles, d.reference.source, seconds, samples / std::max(seconds, 1e-9),
-      d.search, d.triangles_tested_per_sample, d.sign_method);
+      d.search, d.triangles_tested_per_sample(), d.sign_method);
 }
 
 // Output opened first and the report after the commit, as in `sample`.
 void run_distance(const DistanceJob& job) {
   OutputFile out(job.output, OutputKind::binary);
-  SampleSet samples = read_samples_file(job.samples);
+  const Container samples_file =
+      Container::read(job.samples, FileKind::samples, kSamplesFormatVersion);
+  SampleSet samples = load_sample_set(samples_file);
   const IndexedReference reference = read_grid_file(job.grid);
   double seconds = 0;
   const DistanceSet result =
       measure_distances(std::move(samples), reference, job.options, &seconds);
-  write_distance_file(result, out);
+  write_distance_file(result, link_samples(job.samples, samples_file.content_hash(), job.output),
+                      out);
   out.commit();
   log_distances(result, seconds);
   spdlog::info("wrote {}", out.display_name());

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "files/container.hpp"
+#include "files/samples_file.hpp"
 #include "util/error.hpp"
 #include "util/input_bytes.hpp"
 #include "util/output_file.hpp"
@@ -21,6 +22,12 @@ struct Column {
 };
 
 std::string format_value(const Container::RawSection& s, std::uint64_t index) {
+  if (s.dtype == "<u1") return fmt::format("{}", static_cast<std::uint8_t>(s.data[index]));
+  if (s.dtype == "<u2") {
+    std::uint16_t v;
+    std::memcpy(&v, s.data + 2 * index, 2);
+    return fmt::format("{}", v);
+  }
   const char* at = s.data + index * (s.dtype == "<u4" ? 4 : 8);
   if (s.dtype == "<f8") {
     double v;
@@ -73,13 +80,41 @@ void write_records(const Container& c, const InspectJob& options, OutputFile& ou
     fmt::format_to(std::back_inserter(line), "{}{}", separator, column.name);
   }
   line.push_back('\n');
+  // A shard's records are samples first .. first + records - 1 of its job.
+  const std::uint64_t first = c.meta()["records"].contains("first") ? c.count("/records/first") : 0;
   for (std::uint64_t r = 0; r < shown; ++r) {
-    fmt::format_to(std::back_inserter(line), "{}", r);
+    fmt::format_to(std::back_inserter(line), "{}", first + r);
     for (const Column& column : columns) {
       fmt::format_to(std::back_inserter(line), "{}{}", separator,
                      format_value(column.section, r * column.width + column.component));
     }
     line.push_back('\n');
+    if (line.size() > (1u << 20)) {
+      out.write(line.data(), line.size());
+      line.clear();
+    }
+  }
+  out.write(line.data(), line.size());
+}
+
+// A samples file stores the mesh and the lattice sizes; its samples are made again to show
+// them, one row each.
+void write_samples(const Container& c, const InspectJob& options, OutputFile& out) {
+  const SampleSet set = load_sample_set(c);
+  const std::uint64_t shown = options.head >= 0
+                                  ? std::min<std::uint64_t>(set.sample_count(), options.head)
+                                  : set.sample_count();
+  const char separator = options.csv ? ',' : '\t';
+  fmt::memory_buffer line;
+  fmt::format_to(std::back_inserter(line),
+                 "index{0}positions_x{0}positions_y{0}positions_z{0}"
+                 "owner{0}lattice_i{0}lattice_j\n",
+                 separator);
+  for (std::uint64_t k = 0; k < shown; ++k) {
+    const Vec3& p = set.positions[k];
+    fmt::format_to(std::back_inserter(line), "{1}{0}{2}{0}{3}{0}{4}{0}{5}{0}{6}{0}{7}\n", separator,
+                   set.first_sample + k, p[0], p[1], p[2], set.owner[k], set.lattice_i[k],
+                   set.lattice_j[k]);
     if (line.size() > (1u << 20)) {
       out.write(line.data(), line.size());
       line.clear();
@@ -119,9 +154,10 @@ void run_inspect(const InspectJob& options) {
                                    {"meta", c.meta()}};
     out.write(header.dump(2) + "\n");
   } else if (options.csv) {
-    write_records(c, options, out);
+    c.kind() == FileKind::samples ? write_samples(c, options, out) : write_records(c, options, out);
   } else {
     write_header_text(c, input_name(options.file), out);
+    if (options.head >= 0 && c.kind() == FileKind::samples) write_samples(c, options, out);
     if (options.head >= 0 && c.meta().contains("records")) write_records(c, options, out);
   }
   out.commit();

@@ -4,45 +4,13 @@
 
 #include <sstream>
 
+#include "files/distance_job.hpp"
 #include "render/svg_histogram.hpp"
 #include "util/error.hpp"
 #include "util/input_bytes.hpp"
 #include "util/output_file.hpp"
 
 namespace ncv {
-namespace {
-
-// The distance files of one part, at most one per direction: `main` is the forward one, or
-// the only one given.
-struct DirectionFiles {
-  std::optional<DistanceSet> main;
-  std::optional<DistanceSet> reverse;
-};
-
-DirectionFiles read_directions(const std::vector<std::string>& paths) {
-  if (paths.empty() || paths.size() > 2) {
-    throw UsageError("stats: give one distance file, or a forward and a reverse one");
-  }
-  DirectionFiles files;
-  files.main = read_distance_file(paths[0]);
-  if (paths.size() == 1) return files;
-  files.reverse = read_distance_file(paths[1]);
-  if (files.main->direction == files.reverse->direction) {
-    throw UsageError(fmt::format("{} and {} both measure the {} direction; give one of each",
-                                 input_name(paths[0]), input_name(paths[1]),
-                                 name_of(kDirectionNames, files.main->direction)));
-  }
-  std::string main_path = paths[0], reverse_path = paths[1];
-  if (files.main->direction == Direction::reverse) {
-    std::swap(files.main, files.reverse);
-    std::swap(main_path, reverse_path);
-  }
-  check_same_part(*files.main, input_name(main_path), *files.reverse, input_name(reverse_path));
-  return files;
-}
-
-}  // namespace
-
 PartReport make_report(const DistanceSet& distances, const ReportOptions& options) {
   PartReport report = make_part_report(distances, options.tolerance, options.histogram);
   report.listed_regions = options.regions;
@@ -54,18 +22,6 @@ VerificationReport make_verification_report(const DistanceSet& main, const Dista
   VerificationReport report{make_report(main, options), std::nullopt};
   if (reverse) report.reverse = make_report(*reverse, options);
   return report;
-}
-
-void check_same_part(const DistanceSet& forward, const std::string& forward_source,
-                     const DistanceSet& reverse, const std::string& reverse_source) {
-  if (forward.samples.mesh_hash != reverse.reference.hash ||
-      forward.reference.hash != reverse.samples.mesh_hash) {
-    throw UsageError(fmt::format(
-        "{} and {} do not measure the same part: the forward file compares {} with {}, the "
-        "reverse one {} with {}",
-        forward_source, reverse_source, forward.samples.source, forward.reference.source,
-        reverse.samples.source, reverse.reference.source));
-  }
 }
 
 std::string histogram_svg(const PartReport& report) {
@@ -83,9 +39,9 @@ int run_stats(const StatsJob& job) {
     out.commit();
     return 0;
   }
-  const DirectionFiles files = read_directions(job.distances);
+  const PartDistances part = read_part_distances(job.distances, job.samples);
   const VerificationReport report =
-      make_verification_report(*files.main, files.reverse ? &*files.reverse : nullptr, job.options);
+      make_verification_report(part.main, part.reverse ? &*part.reverse : nullptr, job.options);
   // Both outputs open before either is committed: a histogram path that cannot be
   // written leaves no report either.
   OutputFile out(job.output, OutputKind::text);

@@ -25,16 +25,14 @@ PartReport make_report(const DistanceSet& distances, const ReportOptions& option
 // same part, which check_same_part vouches for).
 VerificationReport make_verification_report(const DistanceSet& main, const DistanceSet* reverse,
                                             const ReportOptions& options);
-// Throws UsageError unless `reverse` measures the nominal of `forward` against its workpiece,
-// by the meshes' content hashes.
-void check_same_part(const DistanceSet& forward, const std::string& forward_source,
-                     const DistanceSet& reverse, const std::string& reverse_source);
 // The area-weighted histogram as SVG, with the tolerance limits.
 std::string histogram_svg(const PartReport& report);
 
-// `ncverify stats DIST [REVERSE_DIST]`.
+// `ncverify stats DIST...`.
 struct StatsJob {
-  std::vector<std::string> distances;  // a forward and/or a reverse distance file
+  // A part's distance files: one per direction, or every shard of a direction's job.
+  std::vector<std::string> distances;
+  std::string samples;  // the samples file of a single distance file, when not beside it
   std::string output = "-";
   ReportFormat format = ReportFormat::text;
   bool csv_header = true;        // false: --no-header, the row alone

@@ -20,10 +20,12 @@ SampledSurface sample_surface(Mesh mesh, const std::string& source, const Sample
   if (!(step > 0)) throw InputError(source, "the mesh has no extent");
   SamplingPlan plan = plan_sampling(mesh, step, options.scheme);
   const std::uint64_t predicted = predicted_sample_count(mesh, plan);
-  check_memory_budget(fmt::format("sampling at step {} ({} samples)", step, predicted),
-                      static_cast<double>(predicted) * kBytesPerSampleDownstream, options.force);
+  const std::uint64_t held =
+      options.shard ? shard_range(predicted, *options.shard).size() : predicted;
+  check_memory_budget(fmt::format("sampling at step {} ({} samples)", step, held),
+                      static_cast<double>(held) * kBytesPerSampleDownstream, options.force);
   SampledSurface sampled;
-  sampled.samples = sample_mesh(std::move(mesh), std::move(plan), &sampled.report);
+  sampled.samples = sample_mesh(std::move(mesh), std::move(plan), &sampled.report, options.shard);
   sampled.samples.step_spec = options.step_label.empty() ? options.step.text() : options.step_label;
   sampled.samples.source = source;
   sampled.seconds = clock.seconds();
@@ -35,6 +37,10 @@ void log_sampling(const SampledSurface& sampled) {
   const SamplingReport& r = sampled.report;
   spdlog::info("{}: {} triangles, step {} ({}), scheme {}", s.source, r.triangles, s.step,
                s.step_spec, name_of(kSamplingSchemeNames, s.scheme));
+  if (s.shard) {
+    spdlog::info("shard {}: samples {} to {} of {}", s.shard->text(), s.first_sample,
+                 s.first_sample + s.sample_count(), s.total_samples);
+  }
   spdlog::info("{} samples; {} triangles too small for the step ({}); {} degenerate; {:.3f} s",
                r.samples, r.small_triangles,
                s.scheme == SamplingScheme::all ? "sampled at their vertices" : "skipped",

@@ -2,6 +2,7 @@
 // sampled on the paper's lattice (docs/METHOD.md "Sampling"), after the memory guard.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "mesh/mesh.hpp"
@@ -16,13 +17,11 @@ struct SampleOptions {
   SamplingStep step;  // 0.1 %
   SamplingScheme scheme = SamplingScheme::all;
   bool force = false;  // sample even when the memory guard refuses
+  // One share of the samples, for a job spread over a cluster (sampling/shard.hpp).
+  std::optional<Shard> shard;
   // How the step is shown in files and reports; empty: as the step reads.
   std::string step_label;
 };
-
-// Memory a sample costs through the whole pipeline (samples, distances, reading copies): what
-// the memory guard multiplies the predicted sample count by.
-inline constexpr double kBytesPerSampleDownstream = 160;
 
 struct SampledSurface {
   SampleSet samples;

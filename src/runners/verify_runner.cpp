@@ -55,30 +55,36 @@ Mesh take(Mesh& mesh, bool needed_later) {
   return needed_later ? mesh : std::move(mesh);
 }
 
-// One direction's steps: sample, index the reference, measure; each file written as it is
-// made.
+// One direction's steps: sample, index the reference, measure; each intermediate file
+// written as it is made when `files` says where.
 DistanceSet measure_direction(Mesh sampled_mesh, const std::string& sampled_source,
                               Mesh reference_mesh, const std::string& reference_source,
                               const SampleOptions& sampling, const VerifyOptions& options,
-                              Direction direction, const DirectionFiles& files, PhaseLog& phases) {
+                              Direction direction, const std::optional<DirectionFiles>& files,
+                              PhaseLog& phases) {
   const std::string prefix = direction == Direction::forward ? "" : "reverse ";
   SampledSurface sampled = sample_surface(std::move(sampled_mesh), sampled_source, sampling);
   log_sampling(sampled);
   phases.done(prefix + "sample");
-  phases.time("write", [&] {
-    write_file(files.samples, OutputKind::binary,
-               [&](OutputFile& out) { write_samples_file(sampled.samples, out); });
-  });
+  std::uint64_t samples_hash = 0;
+  if (files) {
+    phases.time("write", [&] {
+      write_file(files->samples, OutputKind::binary,
+                 [&](OutputFile& out) { samples_hash = write_samples_file(sampled.samples, out); });
+    });
+  }
 
   const IndexedSurface indexed =
       index_surface(std::move(reference_mesh), reference_source, options.grid);
   log_grid(indexed);
   phases.done(prefix + "grid-build");
-  phases.time("write", [&] {
-    write_file(files.grid, OutputKind::binary, [&](OutputFile& out) {
-      write_grid_file(indexed.reference, indexed.statistics, out);
+  if (files) {
+    phases.time("write", [&] {
+      write_file(files->grid, OutputKind::binary, [&](OutputFile& out) {
+        write_grid_file(indexed.reference, indexed.statistics, out);
+      });
     });
-  });
+  }
 
   DistanceOptions distance = options.distance;
   distance.direction = direction;
@@ -87,10 +93,15 @@ DistanceSet measure_direction(Mesh sampled_mesh, const std::string& sampled_sour
       measure_distances(std::move(sampled.samples), indexed.reference, distance, &seconds);
   log_distances(distances, seconds);
   phases.done(prefix + "distance");
-  phases.time("write", [&] {
-    write_file(files.distances, OutputKind::binary,
-               [&](OutputFile& out) { write_distance_file(distances, out); });
-  });
+  if (files) {
+    phases.time("write", [&] {
+      write_file(files->distances, OutputKind::binary, [&](OutputFile& out) {
+        write_distance_file(
+            distances,
+            link_samples(files->samples.string(), samples_hash, files->distances.string()), out);
+      });
+    });
+  }
   return distances;
 }
 
@@ -107,7 +118,8 @@ SampleOptions reverse_sampling(const SampleSet& forward, const SampleOptions& op
 
 int run_verification(const RunJob& job) {
   const std::string part = stem(job.workpiece);
-  const fs::path folder = output_folder(job);
+  const fs::path folder = job.keep == Keep::none ? fs::path() : output_folder(job);
+  const bool keep_all = job.keep == Keep::all, keep_reports = job.keep != Keep::none;
   const VerifyOptions& options = job.options;
   const std::string workpiece_source = input_name(job.workpiece);
   const std::string nominal_source = input_name(job.nominal);
@@ -122,42 +134,52 @@ int run_verification(const RunJob& job) {
   const DistanceSet forward = measure_direction(
       take(workpiece, options.two_sided), workpiece_source, take(nominal, options.two_sided),
       nominal_source, options.sampling, options, Direction::forward,
-      {folder / (part + ".samples"), folder / (stem(job.nominal) + ".grid"),
-       folder / (part + ".dist")},
+      keep_all ? std::optional<DirectionFiles>({folder / (part + ".samples"),
+                                                folder / (stem(job.nominal) + ".grid"),
+                                                folder / (part + ".dist")})
+               : std::nullopt,
       phases);
   std::optional<DistanceSet> reverse;
   if (options.two_sided) {
     reverse = measure_direction(
         std::move(nominal), nominal_source, std::move(workpiece), workpiece_source,
         reverse_sampling(forward.samples, options.sampling), options, Direction::reverse,
-        {folder / (part + ".reverse.samples"), folder / (part + ".reverse.grid"),
-         folder / (part + ".reverse.dist")},
+        keep_all ? std::optional<DirectionFiles>({folder / (part + ".reverse.samples"),
+                                                  folder / (part + ".reverse.grid"),
+                                                  folder / (part + ".reverse.dist")})
+                 : std::nullopt,
         phases);
   }
 
   const VerificationReport report =
       make_verification_report(forward, reverse ? &*reverse : nullptr, options.report);
-  write_file(folder / (part + ".report.txt"), OutputKind::text,
-             [&](OutputFile& out) { out.write(format_report(report, ReportFormat::text)); });
-  write_file(folder / (part + ".report.json"), OutputKind::text,
-             [&](OutputFile& out) { out.write(format_report(report, ReportFormat::json)); });
-  write_file(in_folder(job.histogram_svg, folder / (part + ".histogram.svg")), OutputKind::text,
-             [&](OutputFile& out) { out.write(histogram_svg(report.main)); });
-  if (report.reverse) {
+  if (keep_reports) {
+    write_file(folder / (part + ".report.txt"), OutputKind::text,
+               [&](OutputFile& out) { out.write(format_report(report, ReportFormat::text)); });
+    write_file(folder / (part + ".report.json"), OutputKind::text,
+               [&](OutputFile& out) { out.write(format_report(report, ReportFormat::json)); });
+  }
+  if (keep_reports || !job.histogram_svg.empty()) {
+    write_file(in_folder(job.histogram_svg, folder / (part + ".histogram.svg")), OutputKind::text,
+               [&](OutputFile& out) { out.write(histogram_svg(report.main)); });
+  }
+  if (keep_reports && report.reverse) {
     write_file(folder / (part + ".reverse.histogram.svg"), OutputKind::text,
                [&](OutputFile& out) { out.write(histogram_svg(*report.reverse)); });
   }
   phases.done("stats");
 
-  ColorizeOptions colorize = options.colorize;
-  colorize.tolerance = options.report.tolerance;
-  write_colored(forward, colorize, (folder / (part + ".ply")).string(),
-                in_folder(job.legend_svg, folder / (part + ".legend.svg")).string());
-  if (reverse) {
-    write_colored(*reverse, colorize, (folder / (part + ".reverse.ply")).string(),
-                  (folder / (part + ".reverse.legend.svg")).string());
+  if (keep_reports) {
+    ColorizeOptions colorize = options.colorize;
+    colorize.tolerance = options.report.tolerance;
+    write_colored(forward, colorize, (folder / (part + ".ply")).string(),
+                  in_folder(job.legend_svg, folder / (part + ".legend.svg")).string());
+    if (reverse) {
+      write_colored(*reverse, colorize, (folder / (part + ".reverse.ply")).string(),
+                    (folder / (part + ".reverse.legend.svg")).string());
+    }
+    phases.done("colorize");
   }
-  phases.done("colorize");
 
   OutputFile out("-", OutputKind::text);
   out.write(format_report(report, job.format));
@@ -165,13 +187,13 @@ int run_verification(const RunJob& job) {
   nlohmann::json figures = {{"triangles", forward.samples.mesh.triangle_count()},
                             {"samples", forward.samples.sample_count()},
                             {"nominal_triangles", forward.reference.triangles},
-                            {"triangles_tested_per_sample", forward.triangles_tested_per_sample}};
+                            {"triangles_tested_per_sample", forward.triangles_tested_per_sample()}};
   if (reverse) {
     figures["reverse_samples"] = reverse->samples.sample_count();
-    figures["reverse_triangles_tested_per_sample"] = reverse->triangles_tested_per_sample;
+    figures["reverse_triangles_tested_per_sample"] = reverse->triangles_tested_per_sample();
   }
   phases.summary(job.timings, figures);
-  spdlog::info("outputs in {}/", folder.string());
+  if (keep_reports) spdlog::info("outputs in {}/", folder.string());
   return verdict_status(report);
 }
 

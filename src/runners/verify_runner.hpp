@@ -24,15 +24,23 @@ struct VerifyOptions {
   bool two_sided = true;
 };
 
+// What `run` leaves in its folder: everything (the intermediate files too, so each step can
+// be inspected or rerun), the reports and pictures only, or nothing (the report on standard
+// output and the exit status are the result).
+enum class Keep { all, reports, none };
+inline constexpr EnumName<Keep> kKeepNames[] = {
+    {Keep::all, "all"}, {Keep::reports, "reports"}, {Keep::none, "none"}};
+
 struct RunJob {
   std::string workpiece;
   std::string nominal;
   std::string folder;  // empty: WORKPIECE stem + ".ncverify"
   VerifyOptions options;
   ReportFormat format = ReportFormat::text;  // of the report on standard output
-  std::string timings;                       // where to write the phase times; empty: nowhere
-  std::string histogram_svg;                 // empty: PART.histogram.svg in the folder
-  std::string legend_svg;                    // empty: PART.legend.svg in the folder
+  Keep keep = Keep::all;
+  std::string timings;        // where to write the phase times; empty: nowhere
+  std::string histogram_svg;  // empty: PART.histogram.svg in the folder
+  std::string legend_svg;     // empty: PART.legend.svg in the folder
 };
 
 // The exit status: 0 within tolerance (both directions) or without one, 1 out of tolerance.

@@ -27,8 +27,8 @@ std::pair<std::uint32_t, std::uint32_t> corner_lattice_coordinates(int k, std::u
 
 // Numbers the mesh vertices that belong to a sampled triangle: they are samples
 // 0 .. count-1, each owned by its lowest-index sampled triangle (found in parallel by an
-// atomic minimum, so the result does not depend on the thread count).
-std::uint32_t assign_vertex_samples(SampleSet& set) {
+// atomic minimum, so the result does not depend on the thread count). Returns the owners.
+std::vector<std::uint32_t> number_vertex_samples(SampleSet& set) {
   const Mesh& mesh = set.mesh;
   set.vertex_sample.assign(mesh.vertex_count(), kNoSample);
   std::vector<std::uint32_t> owner_of_vertex(mesh.vertex_count(), kNoSample);
@@ -48,42 +48,58 @@ std::uint32_t assign_vertex_samples(SampleSet& set) {
       });
   std::uint32_t count = 0;
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    if (owner_of_vertex[v] != kNoSample) set.vertex_sample[v] = count++;
+  }
+  return owner_of_vertex;
+}
+
+// The vertex samples the set holds, at their lattice corner of their owning triangle.
+void fill_vertex_samples(SampleSet& set, const std::vector<std::uint32_t>& owner_of_vertex) {
+  const Mesh& mesh = set.mesh;
+  const std::uint64_t end = set.first_sample + set.sample_count();
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    const std::uint64_t s = set.vertex_sample[v];
+    if (set.vertex_sample[v] == kNoSample || s < set.first_sample || s >= end) continue;
     const std::uint32_t t = owner_of_vertex[v];
-    if (t == kNoSample) continue;
-    set.vertex_sample[v] = count++;
     const auto& corners = mesh.triangles[t];
     const int corner = corners[0] == v ? 0 : corners[1] == v ? 1 : 2;  // the first that is v
     const auto [i, j] = corner_lattice_coordinates(corner, set.lattice_sizes[t]);
-    set.positions.push_back(mesh.vertices[v]);
-    set.owner.push_back(t);
-    set.lattice_i.push_back(i);
-    set.lattice_j.push_back(j);
+    const std::uint64_t k = s - set.first_sample;
+    set.positions[k] = mesh.vertices[v];
+    set.owner[k] = t;
+    set.lattice_i[k] = i;
+    set.lattice_j[k] = j;
   }
-  return count;
 }
 
 bool is_corner(std::uint32_t i, std::uint32_t j, std::uint32_t n) {
   return (i == 0 && j == 0) || (i == n - 1 && j == 0) || (i == 0 && j == n - 1);
 }
 
-// Writes the non-corner lattice points of triangle t from first_interior_sample[t] on, in row-major
-// order.
+// Writes the non-corner lattice points of triangle t, samples first_interior_sample[t] on in
+// row-major order, that the set holds.
 void fill_triangle_samples(SampleSet& set, std::size_t t) {
   const std::uint32_t n = set.lattice_sizes[t];
   if (n < 3) return;
+  const std::uint64_t first = set.first_interior_sample[t];
+  const std::uint64_t begin = set.first_sample, end = set.first_sample + set.sample_count();
+  if (first >= end || first + lattice_interior_count(n) <= begin) return;
   const Mesh& mesh = set.mesh;
   const Vec3 a = mesh.corner(t, 0);
   const double steps = n - 1;
   const Vec3 e1 = (mesh.corner(t, 1) - a) / steps;
   const Vec3 e2 = (mesh.corner(t, 2) - a) / steps;
-  std::uint64_t s = set.first_interior_sample[t];
+  std::uint64_t s = first;
   for (std::uint32_t i = 0; i < n; ++i) {
     for (std::uint32_t j = 0; j + i < n; ++j) {
       if (is_corner(i, j, n)) continue;
-      set.positions[s] = a + static_cast<double>(i) * e1 + static_cast<double>(j) * e2;
-      set.owner[s] = static_cast<std::uint32_t>(t);
-      set.lattice_i[s] = i;
-      set.lattice_j[s] = j;
+      if (s >= begin && s < end) {
+        const std::uint64_t k = s - begin;
+        set.positions[k] = a + static_cast<double>(i) * e1 + static_cast<double>(j) * e2;
+        set.owner[k] = static_cast<std::uint32_t>(t);
+        set.lattice_i[k] = i;
+        set.lattice_j[k] = j;
+      }
       ++s;
     }
   }
@@ -171,17 +187,19 @@ SampleSet sample_mesh(Mesh workpiece, double step, SamplingScheme scheme, Sampli
   return sample_mesh(std::move(workpiece), std::move(plan), report);
 }
 
-SampleSet sample_mesh(Mesh workpiece, SamplingPlan plan, SamplingReport* report) {
+SampleSet sample_mesh(Mesh mesh, SamplingPlan plan, SamplingReport* report,
+                      const std::optional<Shard>& shard) {
   SampleSet set;
-  set.mesh = std::move(workpiece);
+  set.mesh = std::move(mesh);
   set.step = plan.step;
   set.scheme = plan.scheme;
   set.mesh_hash = mesh_hash(set.mesh);
   set.lattice_sizes = std::move(plan.lattice_sizes);
 
-  const std::uint32_t vertex_samples = assign_vertex_samples(set);
+  const std::vector<std::uint32_t> owner_of_vertex = number_vertex_samples(set);
   set.first_interior_sample.resize(set.lattice_sizes.size());
-  std::uint64_t next = vertex_samples;
+  std::uint64_t next = std::count_if(set.vertex_sample.begin(), set.vertex_sample.end(),
+                                     [](std::uint32_t s) { return s != kNoSample; });
   for (std::size_t t = 0; t < set.lattice_sizes.size(); ++t) {
     set.first_interior_sample[t] = next;
     // Only reachable past the memory guard (--force): a wrapped count would size the
@@ -191,10 +209,15 @@ SampleSet sample_mesh(Mesh workpiece, SamplingPlan plan, SamplingReport* report)
           fmt::format("sampling at step {} would give more than 2^64 samples", set.step));
     }
   }
-  set.positions.resize(next);
-  set.owner.resize(next);
-  set.lattice_i.resize(next);
-  set.lattice_j.resize(next);
+  set.total_samples = next;
+  const SampleRange range = shard ? shard_range(next, *shard) : SampleRange{0, next};
+  set.shard = shard;
+  set.first_sample = range.begin;
+  set.positions.resize(range.size());
+  set.owner.resize(range.size());
+  set.lattice_i.resize(range.size());
+  set.lattice_j.resize(range.size());
+  fill_vertex_samples(set, owner_of_vertex);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, set.lattice_sizes.size(), 1024),
                     [&](const auto& r) {
                       for (std::size_t t = r.begin(); t != r.end(); ++t) {
@@ -205,7 +228,7 @@ SampleSet sample_mesh(Mesh workpiece, SamplingPlan plan, SamplingReport* report)
   if (report) {
     *report = plan.counts;
     report->triangles = set.mesh.triangle_count();
-    report->samples = set.sample_count();
+    report->samples = set.total_samples;
   }
   return set;
 }

@@ -9,10 +9,12 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "mesh/mesh.hpp"
+#include "sampling/shard.hpp"
 #include "util/enum_names.hpp"
 
 namespace ncv {
@@ -26,6 +28,10 @@ inline constexpr EnumName<SamplingScheme> kSamplingSchemeNames[] = {
     {SamplingScheme::all, "all"}, {SamplingScheme::paper_ii, "paper-ii"}};
 
 inline constexpr std::uint32_t kNoSample = std::numeric_limits<std::uint32_t>::max();
+
+// Memory a sample costs through the whole pipeline (samples, distances, reading copies): what
+// the memory guard multiplies a sample count by before the samples are made.
+inline constexpr double kBytesPerSampleDownstream = 160;
 
 // Equation (1): n' = sqrt(1/4 + 2|T|/step^2) - 1/2, rounded to the nearest integer.
 std::uint32_t lattice_size(double area, double step);
@@ -51,13 +57,20 @@ struct SampleSet {
       first_interior_sample;                 // first own (non-corner) sample of each triangle
   std::vector<std::uint32_t> vertex_sample;  // sample of each mesh vertex, or kNoSample
 
-  std::vector<Vec3> positions;           // per sample
-  std::vector<std::uint32_t> owner;      // per sample: a triangle it lies on
-  std::vector<std::uint32_t> lattice_i;  // per sample: lattice coordinates in owner
+  // The samples this set holds are numbers first_sample .. first_sample + sample_count() - 1
+  // of the lattice's total_samples: all of them, or a shard's range (shard.hpp).
+  std::uint64_t total_samples = 0;
+  std::uint64_t first_sample = 0;
+  std::optional<Shard> shard;  // set when this is a shard's range
+
+  std::vector<Vec3> positions;           // per sample held
+  std::vector<std::uint32_t> owner;      // per sample held: a triangle it lies on
+  std::vector<std::uint32_t> lattice_i;  // per sample held: lattice coordinates in owner
   std::vector<std::uint32_t> lattice_j;
 
   std::size_t sample_count() const { return positions.size(); }
-  // Sample index of lattice point (i, j) of triangle t (t must be sampled).
+  bool whole() const { return first_sample == 0 && sample_count() == total_samples; }
+  // Sample number of lattice point (i, j) of triangle t (t must be sampled).
   std::uint64_t sample_at(std::size_t t, std::uint32_t i, std::uint32_t j) const;
 };
 
@@ -85,8 +98,10 @@ SamplingPlan plan_sampling(const Mesh& mesh, double step, SamplingScheme scheme)
 // Samples that sample_mesh would produce from the plan, computed without allocating them.
 std::uint64_t predicted_sample_count(const Mesh& mesh, const SamplingPlan& plan);
 
-// The plan must be plan_sampling(workpiece, ...).
-SampleSet sample_mesh(Mesh workpiece, SamplingPlan plan, SamplingReport* report = nullptr);
+// The plan must be plan_sampling(mesh, ...). With a shard, only its range of samples is made
+// (the lattice bookkeeping is always the whole mesh's).
+SampleSet sample_mesh(Mesh mesh, SamplingPlan plan, SamplingReport* report = nullptr,
+                      const std::optional<Shard>& shard = std::nullopt);
 // Plans and samples.
 SampleSet sample_mesh(Mesh workpiece, double step, SamplingScheme scheme,
                       SamplingReport* report = nullptr);

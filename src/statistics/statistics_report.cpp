@@ -123,7 +123,7 @@ void text_header(const std::vector<const PartReport*>& reports, fmt::memory_buff
            name_of(kDirectionNames, d.direction), d.samples.step, d.samples.step_spec,
            d.samples.scheme == SamplingScheme::all ? "all (paper I)" : "paper-ii", s.samples,
            forward(*r) ? "workpiece" : "nominal", s.triangles_vertex_only, s.triangles_unsampled,
-           d.search, d.triangles_tested_per_sample, d.sign_method);
+           d.search, d.triangles_tested_per_sample(), d.sign_method);
   }
   append(out, "\n");
 }
@@ -230,7 +230,7 @@ nlohmann::json direction_json(const PartReport& r) {
                       {"distance",
                        {{"search", d.search},
                         {"sign_method", d.sign_method},
-                        {"triangles_tested_per_sample", d.triangles_tested_per_sample}}},
+                        {"triangles_tested_per_sample", d.triangles_tested_per_sample()}}},
                       {"error",
                        {{"max", extreme_json(s.max)},
                         {"min", extreme_json(s.min)},

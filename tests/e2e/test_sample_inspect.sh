@@ -6,7 +6,7 @@ write_box_stl box.stl 10 20 5
 
 check "sample writes a samples file" "$NCVERIFY" -q sample box.stl -o box.samples --step 1
 check "inspect reads it" "$NCVERIFY" inspect box.samples -o header.txt
-check "header names the kind" grep -q "SMPL (samples file), format version 2" header.txt
+check "header names the kind" grep -q "SMPL (samples file), format version 3" header.txt
 "$NCVERIFY" inspect box.samples --json >header.json
 check "JSON header has the sample count" /usr/bin/python3 -c "
 import json; h = json.load(open('header.json')); assert h['meta']['sampling']['samples'] > 100"
@@ -22,9 +22,19 @@ a = json.load(open('header.json'))['meta']; b = json.load(open('piped.json'))['m
 assert a['sampling'] == b['sampling'] and a['mesh']['hash'] == b['mesh']['hash']"
 check "logs go to stderr only" test -z "$("$NCVERIFY" sample box.stl -o quiet.samples --step 1 2>/dev/null)"
 
-# The numpy snippet of docs/FORMATS.md reads the file and finds the lattice identity.
+# The numpy snippet of docs/FORMATS.md reads the file, and its lattice rule regenerates the
+# points and owners ncverify prints, bit for bit (the CSV's decimals round-trip).
 /usr/bin/python3 "$NCV_SOURCE_DIR/docs/read_ncverify.py" box.samples >numpy.txt
-check "numpy reader of FORMATS.md works" grep -q "positions (" numpy.txt
+check "numpy reader of FORMATS.md works" grep -q "^positions (.*) float64 (regenerated)" numpy.txt
+"$NCVERIFY" inspect box.samples --csv >all.csv
+check "the regenerated points are ncverify's" /usr/bin/python3 -c "
+import sys; sys.path.insert(0, '$NCV_SOURCE_DIR/docs')
+import numpy as np
+from read_ncverify import read_ncverify, sample_points
+positions, owner = sample_points(read_ncverify('box.samples')[3])
+csv = np.loadtxt('all.csv', delimiter=',', skiprows=1)
+assert len(csv) == len(positions) > 100
+assert np.array_equal(csv[:, 1:4], positions) and np.array_equal(csv[:, 4], owner)"
 
 # Scheme II on a mesh with only tiny triangles has fewer samples than scheme I.
 "$NCVERIFY" -q sample box.stl -o i.samples --step 40 --scheme all

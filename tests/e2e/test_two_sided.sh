@@ -72,7 +72,7 @@ expect_bad_input "two forward files" "both measure the forward direction" report
 /usr/bin/python3 -c "
 import struct, sys
 b = bytearray(open('w.dist', 'rb').read()); struct.pack_into('<I', b, 12, 1); open('old.dist', 'wb').write(b)"
-expect_bad_input "a distance file of an older format" "distance file format version 1 is older than this ncverify reads (version 2): make it again" "" \
+expect_bad_input "a distance file of an older format" "distance file format version 1 is older than this ncverify reads (version 3): make it again" "" \
   "$NCVERIFY" stats old.dist
 
 # The reverse direction over the grid equals brute force, and does not depend on the threads.

@@ -18,7 +18,6 @@ DistanceSet linear_field_part() {
   set.samples.step_spec = "0.5";
   for (const Vec3& p : set.samples.positions) {
     set.field.distance.push_back(p[0] / 10 - 0.2);
-    set.field.closest_point.push_back({p[0], p[1], 0});
     set.field.closest_face.push_back(0);
   }
   set.reference = {"plate_nominal.stl", 42, 2, {}};
@@ -107,7 +106,6 @@ DistanceSet reverse_of(const DistanceSet& forward) {
   set.samples.step_spec = "0.5";
   for (const Vec3& p : set.samples.positions) {
     set.field.distance.push_back(-(p[0] / 10 - 0.2) * 2);
-    set.field.closest_point.push_back(p);
     set.field.closest_face.push_back(0);
   }
   set.reference = {"parts/plate.stl", 7, 2, {}};
