@@ -13,6 +13,7 @@ void add_colorize_command(CLI::App& app, CommandContext&) {
       ->required();
   add_output_option(*sub, job->output, "PLY file (default: DIST stem + .ply)");
   add_colorize_options(*sub, job->options);
+  add_units_option(*sub, job->options.units);
   sub->add_option("--legend", job->legend_svg, "Also write the colour bar as SVG");
   add_tolerance_option(*sub, job->options.tolerance,
                        "Tolerance zone LOWER:UPPER or T (selects the tolerance colour map)");

@@ -24,9 +24,11 @@ void add_stats_command(CLI::App& app, CommandContext& context) {
       *sub, job->options.tolerance,
       "Tolerance zone LOWER:UPPER (e.g. -0.05:0.1), or T for ±T; out of it, exit 1");
   add_report_options(*sub, job->options);
-  sub->add_option("--histogram-svg", job->histogram_svg,
+  sub->add_option("--histogram-svg", job->files.histogram_svg,
                   "Also draw the area-weighted histogram as SVG");
+  add_report_file_options(*sub, job->files);
   sub->callback([job, &context] {
+    job->command_line = context.command_line;
     if (job->distances.empty() && !job->csv_header_only) {
       throw UsageError("stats: give a distance file");
     }

@@ -8,22 +8,15 @@
 #include "util/error.hpp"
 #include "util/input_bytes.hpp"
 #include "util/output_file.hpp"
+#include "util/timestamp.hpp"
 
 namespace ncv {
-namespace {
 
-// The distance files of one part, at most one per direction: `main` is the forward one, or
-// the only one given.
-struct DirectionFiles {
-  std::optional<DistanceSet> main;
-  std::optional<DistanceSet> reverse;
-};
-
-DirectionFiles read_directions(const std::vector<std::string>& paths) {
+DistanceFiles read_distance_files(const std::vector<std::string>& paths) {
   if (paths.empty() || paths.size() > 2) {
     throw UsageError("stats: give one distance file, or a forward and a reverse one");
   }
-  DirectionFiles files;
+  DistanceFiles files;
   files.main = read_distance_file(paths[0]);
   if (paths.size() == 1) return files;
   files.reverse = read_distance_file(paths[1]);
@@ -41,17 +34,23 @@ DirectionFiles read_directions(const std::vector<std::string>& paths) {
   return files;
 }
 
-}  // namespace
-
 PartReport make_report(const DistanceSet& distances, const ReportOptions& options) {
   PartReport report = make_part_report(distances, options.tolerance, options.histogram);
   report.listed_regions = options.regions;
+  report.units = options.units;
   return report;
+}
+
+Traceability traceability(const std::string& command_line) {
+  Traceability trace;
+  trace.date = report_timestamp();
+  trace.command_line = command_line;
+  return trace;
 }
 
 VerificationReport make_verification_report(const DistanceSet& main, const DistanceSet* reverse,
                                             const ReportOptions& options) {
-  VerificationReport report{make_report(main, options), std::nullopt};
+  VerificationReport report{make_report(main, options), std::nullopt, {}};
   if (reverse) report.reverse = make_report(*reverse, options);
   return report;
 }
@@ -72,8 +71,23 @@ std::string histogram_svg(const PartReport& report) {
   std::ostringstream svg;
   const std::optional<ToleranceAreas>& tolerance = report.statistics.tolerance;
   write_histogram_svg(svg, report.statistics.histogram,
-                      tolerance ? std::optional<Tolerance>(tolerance->tolerance) : std::nullopt);
+                      tolerance ? std::optional<Tolerance>(tolerance->tolerance) : std::nullopt,
+                      picture_text(report));
   return svg.str();
+}
+
+std::deque<OutputFile> write_report_files(const PartReport& report, const ReportFiles& files) {
+  std::deque<OutputFile> outputs;
+  if (!files.histogram_svg.empty()) {
+    outputs.emplace_back(files.histogram_svg, OutputKind::text).write(histogram_svg(report));
+  }
+  if (!files.regions_csv.empty()) {
+    outputs.emplace_back(files.regions_csv, OutputKind::text).write(regions_csv(report));
+  }
+  if (!files.histogram_csv.empty()) {
+    outputs.emplace_back(files.histogram_csv, OutputKind::text).write(histogram_csv(report));
+  }
+  return outputs;
 }
 
 int run_stats(const StatsJob& job) {
@@ -83,20 +97,17 @@ int run_stats(const StatsJob& job) {
     out.commit();
     return 0;
   }
-  const DirectionFiles files = read_directions(job.distances);
-  const VerificationReport report =
+  const DistanceFiles files = read_distance_files(job.distances);
+  VerificationReport report =
       make_verification_report(*files.main, files.reverse ? &*files.reverse : nullptr, job.options);
-  // Both outputs open before either is committed: a histogram path that cannot be
-  // written leaves no report either.
+  report.trace = traceability(job.command_line);
+  // Every output open before any is committed: a histogram path that cannot be written
+  // leaves no report either.
   OutputFile out(job.output, OutputKind::text);
-  std::optional<OutputFile> histogram;
-  if (!job.histogram_svg.empty()) {
-    histogram.emplace(job.histogram_svg, OutputKind::text);
-    histogram->write(histogram_svg(report.main));
-  }
+  std::deque<OutputFile> extras = write_report_files(report.main, job.files);
   out.write(format_report(report, job.format, job.csv_header));
   out.commit();
-  if (histogram) histogram->commit();
+  for (OutputFile& extra : extras) extra.commit();
   return verdict_status(report);
 }
 
