@@ -2,10 +2,12 @@
 // DevTools protocol) and checks what a person would see. Used by test_html_report.sh.
 //
 //   node browser_check.mjs report REPORT.html SCREENSHOT.png
-//     The page loads with no JavaScript error and no request beyond its own file; the 3D
-//     view draws the part in the tolerance map's colours (pixels of the canvas, not blank);
-//     the region table lists every region; hovering reads the error out; choosing a region
-//     row moves the camera there. Writes a screenshot of the page's top.
+//     The page loads with no JavaScript error and no request beyond its own file; the first
+//     3D view draws the part in the tolerance map's colours (pixels of the canvas, not
+//     blank); its region table lists every region; hovering reads the error out; choosing a
+//     region row moves the camera there. Writes a screenshot of the page's top.
+//     Environment: EXPECT_REGIONS (the first direction's), EXPECT_VIEWS, EXPECT_VERDICT,
+//     EXPECT_EXCESS and EXPECT_GOUGE (1: that colour must show).
 //   node browser_check.mjs svg FILE.svg...
 //     No text of the picture leaves it or overlaps another text.
 //
@@ -60,9 +62,13 @@ async function startBrowser() {
   }
   await sleep(100);
   const port = Number(readFileSync(portFile, 'utf8').split('\n')[0]);
-  const stop = () => {
-    browser.kill('SIGKILL');
-    rmSync(profile, { recursive: true, force: true });
+  const stop = async () => {
+    if (browser.exitCode === null) {
+      const exited = new Promise((done) => browser.once('exit', done));
+      browser.kill('SIGKILL');
+      await exited;
+    }
+    rmSync(profile, { recursive: true, force: true, maxRetries: 5, retryDelay: 200 });
   };
   return { port, stop };
 }
@@ -153,7 +159,8 @@ async function checkReport(port, htmlPath, screenshotPath) {
     if (!(await waitFor(evaluate, 'window.ncvReport && window.ncvReport.ready', 'the report reports ready'))) return;
     await sleep(500);
     const page = await evaluate(`({
-      rows: document.querySelectorAll('tr[data-region]').length,
+      rows: document.querySelector('section.ncv-direction').querySelectorAll('tr[data-region]').length,
+      views: window.ncvReport.views.length,
       regions: window.ncvReport.views[0].regions,
       triangles: window.ncvReport.views[0].triangles,
       verdict: document.getElementById('ncv-verdict').textContent,
@@ -163,6 +170,9 @@ async function checkReport(port, htmlPath, screenshotPath) {
     check(page.regions === expected, `the view marks ${expected} regions (it marks ${page.regions})`);
     check(page.rows === expected, `the region table lists ${expected} regions (it lists ${page.rows})`);
     check(page.triangles > 0, 'the view has triangles');
+    if (process.env.EXPECT_VIEWS) {
+      check(page.views === Number(process.env.EXPECT_VIEWS), `the page shows ${process.env.EXPECT_VIEWS} views (it shows ${page.views})`);
+    }
     if (process.env.EXPECT_VERDICT) {
       check(page.verdict.includes(process.env.EXPECT_VERDICT), `the banner says ${process.env.EXPECT_VERDICT}: ${page.verdict}`);
     }
@@ -254,7 +264,7 @@ async function main() {
     else if (mode === 'svg') for (const path of paths) await checkSvg(port, path);
     else throw new Error(`unknown mode ${mode}: use report or svg`);
   } finally {
-    stop();
+    await stop();
   }
   console.log(`browser: ${passed} passed, ${failed} failed`);
   process.exit(failed === 0 ? 0 : 1);

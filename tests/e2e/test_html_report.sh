@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The HTML report and the SVG pictures in a real browser (headless chromium over the
-# DevTools protocol, browser_check.mjs): the page of the bundled finishing part loads with no
-# error and no request, draws the part in the tolerance map's colours, lists and marks every
-# region, reads the error under the pointer and flies to a chosen region; the legend and
+# DevTools protocol, browser_check.mjs): the page of the bundled finishing part (both
+# directions) loads with no error and no request, draws the part in the tolerance map's
+# colours, lists and marks every region, reads the error under the pointer and flies to a
+# chosen region; the legend and
 # histogram of every bundled part keep each label inside the picture and clear of the others.
 . "$(dirname "$0")/lib.sh"
 cd "$WORK"
@@ -13,7 +14,7 @@ CHECK="$NCV_SOURCE_DIR/tests/e2e/browser_check.mjs"
   >/dev/null 2>&1
 regions=$(/usr/bin/python3 -c "import json; c = json.load(open('fin/core_finishing.report.json'))['region_counts']; print(c['excess'] + c['gouge'])")
 check "the finishing part has regions to show" test "$regions" -gt 20
-if EXPECT_REGIONS=$regions EXPECT_VERDICT=FAIL EXPECT_EXCESS=1 EXPECT_GOUGE=1 \
+if EXPECT_REGIONS=$regions EXPECT_VIEWS=2 EXPECT_VERDICT=FAIL EXPECT_EXCESS=1 EXPECT_GOUGE=1 \
   node "$CHECK" report fin/core_finishing.report.html page.png >browser.log 2>&1; then
   pass
 else
@@ -32,7 +33,8 @@ for part in "$PARTS"/*.stl; do
     dir="svg_${name}_${tol}"
     "$NCVERIFY" -q run "$part" "$nominal" -d "$dir" --tol "$tol" --step 0.5% >/dev/null 2>&1
     check "$name at $tol: pictures written" test -s "$dir/$name.legend.svg" -a -s "$dir/$name.histogram.svg"
-    svgs+=("$dir/$name.legend.svg" "$dir/$name.histogram.svg")
+    svgs+=("$dir/$name.legend.svg" "$dir/$name.histogram.svg"
+      "$dir/$name.reverse.legend.svg" "$dir/$name.reverse.histogram.svg")
   done
 done
 if node "$CHECK" svg "${svgs[@]}" >svg.log 2>&1; then

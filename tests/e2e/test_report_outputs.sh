@@ -80,7 +80,7 @@ check "the text report names the units and rounds" py "
 import json
 t = open('fin/core_finishing.report.txt').read()
 d_max = json.load(open('fin/core_finishing.report.json'))['error']['max']['value']
-assert 'max         %.4f mm' % d_max in t, t
+assert 'max           %.4f ' % d_max in t, t
 assert 'error in mm' in t and 'mm²' in t
 import re
 assert not re.search(r'\d\.\d{7,}', t), re.search(r'\d\.\d{7,}', t)
