@@ -27,7 +27,7 @@
 
 namespace ncv {
 
-// About 12 MB of HTML at most: a browser loads and turns it at once.
+// About 10 MB of HTML for a page's views together: a browser loads and turns it at once.
 inline constexpr std::uint64_t kDisplayTriangleBudget = 250000;
 
 enum class DisplayDetail {

@@ -418,7 +418,7 @@ HtmlReport verification_html_report(const VerificationReport& r, std::span<const
          make_display_mesh({set.samples, set.field.distance, p.sample_region,
                             t ? std::optional<Tolerance>(t->tolerance) : std::nullopt,
                             maps[k].range},
-                           budget)});
+                           budget / directions.size())});
   }
   return report;
 }

@@ -53,7 +53,8 @@ std::string html_report(const HtmlReport& report);
 
 // The page of a part's verification: a section per direction measured (maps[0] colours the
 // main one, maps[1] the reverse one when there is one), inputs and parameters from the
-// distance files, each view's mesh within `budget` triangles.
+// distance files, the views' meshes within `budget` triangles together (an equal share
+// each), so that the page stays about 10 MB.
 HtmlReport verification_html_report(const VerificationReport& report,
                                     std::span<const ColorMap> maps,
                                     std::uint64_t budget = kDisplayTriangleBudget);
