@@ -12,11 +12,10 @@ void add_colorize_command(CLI::App& app, CommandContext&) {
   sub->add_option("distances", job->distances,
                   "Distance file from `distance` (- = stdin), or every shard's of one direction")
       ->required();
-  sub->add_option("--samples", job->samples,
-                  "The samples file of the distance file, when it is not where the distance "
-                  "file says");
+  add_samples_file_option(*sub, job->samples);
   add_output_option(*sub, job->output, "PLY file (default: DIST stem + .ply)");
   add_colorize_options(*sub, job->options);
+  add_units_option(*sub, job->options.units);
   sub->add_option("--legend", job->legend_svg, "Also write the colour bar as SVG");
   add_tolerance_option(*sub, job->options.tolerance,
                        "Tolerance zone LOWER:UPPER or T (selects the tolerance colour map)");

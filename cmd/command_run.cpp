@@ -37,7 +37,10 @@ void add_run_command(CLI::App& app, CommandContext& context) {
                   "pictures only, or nothing (the report on stdout)");
   sub->add_option("--timings", job->timings,
                   "Also write each phase's wall time and the peak memory as JSON (benchmarks)");
-  sub->callback([job, &context] { context.exit_status = run_verification(*job); });
+  sub->callback([job, &context] {
+    job->command_line = context.command_line;
+    context.exit_status = run_verification(*job);
+  });
 }
 
 }  // namespace ncv::cmd

@@ -13,9 +13,7 @@ void add_stats_command(CLI::App& app, CommandContext& context) {
   sub->add_option("distances", job->distances,
                   "Distance file from `distance` (- = stdin), and optionally the same part's "
                   "reverse distance file (`distance --reverse`); or every shard's of each");
-  sub->add_option("--samples", job->samples,
-                  "The samples file of the distance file, when it is not where the distance "
-                  "file says");
+  add_samples_file_option(*sub, job->samples);
   add_enum_option(*sub, "--format", job->format, kReportFormatNames, "Report format");
   sub->add_flag(
       "--no-header", [job](std::int64_t) { job->csv_header = false; },
@@ -27,9 +25,11 @@ void add_stats_command(CLI::App& app, CommandContext& context) {
       *sub, job->options.tolerance,
       "Tolerance zone LOWER:UPPER (e.g. -0.05:0.1), or T for ±T; out of it, exit 1");
   add_report_options(*sub, job->options);
-  sub->add_option("--histogram-svg", job->histogram_svg,
+  sub->add_option("--histogram-svg", job->files.histogram_svg,
                   "Also draw the area-weighted histogram as SVG");
+  add_report_file_options(*sub, job->files);
   sub->callback([job, &context] {
+    job->command_line = context.command_line;
     if (job->distances.empty() && !job->csv_header_only) {
       throw UsageError("stats: give a distance file");
     }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <string>
 
 namespace ncv::cmd {
 
@@ -13,7 +14,11 @@ inline constexpr int kExitBadInput = 2;
 // Each command writes its result status here (0 unless it says otherwise).
 struct CommandContext {
   int exit_status = kExitSuccess;
+  std::string command_line;  // as typed, for the reports' traceability
 };
+
+// argv as one line a shell would read back: arguments with blanks or quotes single-quoted.
+std::string quoted_command_line(int argc, char** argv);
 
 void add_sample_command(CLI::App& app, CommandContext& context);
 void add_inspect_command(CLI::App& app, CommandContext& context);
@@ -22,5 +27,6 @@ void add_distance_command(CLI::App& app, CommandContext& context);
 void add_stats_command(CLI::App& app, CommandContext& context);
 void add_colorize_command(CLI::App& app, CommandContext& context);
 void add_run_command(CLI::App& app, CommandContext& context);
+void add_report_command(CLI::App& app, CommandContext& context);
 
 }  // namespace ncv::cmd

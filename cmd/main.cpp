@@ -30,12 +30,14 @@ int main(int argc, char** argv) {
   app.add_flag("-v,--verbose", verbose, "More detail on standard error");
 
   cmd::CommandContext context;
+  context.command_line = cmd::quoted_command_line(argc, argv);
   cmd::add_sample_command(app, context);
   cmd::add_grid_build_command(app, context);
   cmd::add_distance_command(app, context);
   cmd::add_stats_command(app, context);
   cmd::add_colorize_command(app, context);
   cmd::add_run_command(app, context);
+  cmd::add_report_command(app, context);
   cmd::add_inspect_command(app, context);
 
   // Logging must be set up before any subcommand callback runs.

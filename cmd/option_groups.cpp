@@ -54,11 +54,29 @@ void add_report_options(CLI::App& sub, ReportOptions& options) {
   sub.add_option("--bins", options.histogram.bins, "Histogram bins")->capture_default_str();
   add_parsed_option(sub, "--histogram-range", options.histogram.range, parse_value_range,
                     "Histogram range LO:HI (default: d_min to d_max)");
-  sub.add_option("--regions", options.regions, "Out-of-tolerance regions listed")
+  sub.add_option("--regions", options.regions, "Out-of-tolerance regions listed in the text")
+      ->capture_default_str();
+  add_units_option(sub, options.units);
+}
+
+void add_report_file_options(CLI::App& sub, ReportFiles& files) {
+  sub.add_option("--regions-csv", files.regions_csv,
+                 "Also list every out-of-tolerance region as CSV");
+  sub.add_option("--histogram-csv", files.histogram_csv, "Also write the histogram as CSV");
+}
+
+void add_units_option(CLI::App& sub, std::string& units) {
+  sub.add_option("--units", units, "Units of the model's coordinates, named in the reports")
       ->capture_default_str();
 }
 
-void add_colorize_options(CLI::App& sub, ColorizeOptions& options) {
+void add_samples_file_option(CLI::App& sub, std::string& samples) {
+  sub.add_option("--samples", samples,
+                 "The samples file of the distance file, when it is not where the distance file "
+                 "says");
+}
+
+void add_color_map_options(CLI::App& sub, ColorizeOptions& options) {
   add_parsed_option(
       sub, "--map", options.map,
       [](const std::string& text) {
@@ -73,8 +91,14 @@ void add_colorize_options(CLI::App& sub, ColorizeOptions& options) {
       ->type_name("NAME");
   add_parsed_option(sub, "--range", options.range, parse_value_range,
                     "Values the colour map spans, LO:HI or R for ±R (default: from the data)");
-  sub.add_flag("--refine", options.lattice,
-               "Write the sampling lattice as the mesh, so every sample's error shows");
+}
+
+void add_colorize_options(CLI::App& sub, ColorizeOptions& options) {
+  add_color_map_options(sub, options);
+  sub.add_flag("--coarse", options.coarse,
+               "Write the mesh's own vertices only (a small file; errors inside its triangles, "
+               "the worst point among them, do not show); default: the sampling lattice, every "
+               "sample a vertex");
 }
 
 }  // namespace ncv::cmd

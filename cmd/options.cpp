@@ -1,5 +1,7 @@
 #include "options.hpp"
 
+#include "commands.hpp"
+
 #include <filesystem>
 
 namespace ncv::cmd {
@@ -18,6 +20,24 @@ std::string default_output(const std::string& output, const std::string& input,
 
 void add_output_option(CLI::App& sub, std::string& output, const std::string& description) {
   sub.add_option("-o,--output", output, description + "; - = standard output");
+}
+
+std::string quoted_command_line(int argc, char** argv) {
+  static constexpr std::string_view kPlain =
+      "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-+=/.,:%@";
+  std::string line;
+  for (int k = 0; k < argc; ++k) {
+    const std::string_view arg = argv[k];
+    if (k > 0) line += ' ';
+    if (!arg.empty() && arg.find_first_not_of(kPlain) == std::string_view::npos) {
+      line += arg;
+      continue;
+    }
+    line += '\'';
+    for (const char c : arg) line += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    line += '\'';
+  }
+  return line;
 }
 
 }  // namespace ncv::cmd

@@ -11,11 +11,15 @@ namespace ncv {
 
 namespace {
 
+// Every shade is fully saturated with a bright dominant channel, so that it keeps its hue
+// when a viewer's lighting darkens it: a point just beyond a limit must not read grey. The
+// magnitude runs from a light hue at the limit (amber, azure) to the deep one at the end
+// of the range (red, indigo), as metrology colour maps do.
 constexpr Rgb kWithin{0, 160, 60};
-constexpr Rgb kExcessPale{255, 175, 160};
-constexpr Rgb kExcessDeep{170, 0, 0};
-constexpr Rgb kGougePale{165, 190, 255};
-constexpr Rgb kGougeDeep{0, 0, 170};
+constexpr Rgb kExcessAtLimit{255, 150, 0};
+constexpr Rgb kExcessDeep{200, 0, 0};
+constexpr Rgb kGougeAtLimit{0, 140, 255};
+constexpr Rgb kGougeDeep{40, 0, 170};
 
 // ColorBrewer RdBu, 11 classes, from blue to red.
 constexpr Rgb kRdBu[] = {{5, 48, 97},     {33, 102, 172},  {67, 147, 195},  {146, 197, 222},
@@ -78,11 +82,12 @@ Rgb diverging(double value, ValueRange range) {
 
 Rgb tolerance_color(double value, ValueRange range, const Tolerance& zone) {
   if (value > zone.upper) {
-    return mix(kExcessPale, kExcessDeep,
+    return mix(kExcessAtLimit, kExcessDeep,
                fraction(value, zone.upper, std::max(range.hi, zone.upper)));
   }
   if (value < zone.lower) {
-    return mix(kGougePale, kGougeDeep, fraction(value, zone.lower, std::min(range.lo, zone.lower)));
+    return mix(kGougeAtLimit, kGougeDeep,
+               fraction(value, zone.lower, std::min(range.lo, zone.lower)));
   }
   return kWithin;
 }
@@ -93,10 +98,10 @@ std::vector<ColorStop> tolerance_stops(ValueRange range, const Tolerance& zone) 
     if (value >= range.lo && value <= range.hi) stops.push_back({value, color});
   };
   add(range.lo, tolerance_color(range.lo, range, zone));
-  add(zone.lower, kGougePale);
+  add(zone.lower, kGougeAtLimit);
   add(zone.lower, kWithin);
   add(zone.upper, kWithin);
-  add(zone.upper, kExcessPale);
+  add(zone.upper, kExcessAtLimit);
   add(range.hi, tolerance_color(range.hi, range, zone));
   return stops;
 }

@@ -1,8 +1,8 @@
 // Colour maps from signed error to RGB (docs/METHOD.md "Colouring").
 //
 //   tolerance  the paper's scheme: green inside the tolerance zone, red for excess and
-//              blue for gouge, from a pale shade at the limit to a deep one at the end of
-//              the range (hi for excess, lo for gouge) and beyond.
+//              blue for gouge, from a light saturated shade at the limit (amber, azure) to
+//              a deep one at the end of the range (red at hi, indigo at lo) and beyond.
 //   diverging  blue - white - red (ColorBrewer RdBu) over [lo, hi], white at 0 when the
 //              range contains it, else at its middle.
 //   turbo      Google's Turbo rainbow over [lo, hi].

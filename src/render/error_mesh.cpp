@@ -19,15 +19,22 @@ std::uint32_t vertex_index(std::uint64_t sample) {
 
 }  // namespace
 
-ErrorMesh workpiece_error_mesh(const SampleSet& samples, std::span<const double> d) {
-  ErrorMesh out{samples.mesh, std::vector<double>(samples.mesh.vertex_count(), kNoValue)};
-  for (std::size_t v = 0; v < out.values.size(); ++v) {
-    if (samples.vertex_sample[v] != kNoSample) out.values[v] = d[samples.vertex_sample[v]];
+ErrorMesh workpiece_error_mesh(const SampleSet& samples, std::span<const double> d,
+                               std::span<const std::uint32_t> sample_region) {
+  const std::size_t vertices = samples.mesh.vertex_count();
+  ErrorMesh out{samples.mesh, std::vector<double>(vertices, kNoValue),
+                std::vector<std::uint32_t>(vertices, kNoRegion)};
+  for (std::size_t v = 0; v < vertices; ++v) {
+    const std::uint32_t s = samples.vertex_sample[v];
+    if (s == kNoSample) continue;
+    out.values[v] = d[s];
+    if (!sample_region.empty()) out.regions[v] = sample_region[s];
   }
   return out;
 }
 
-ErrorMesh lattice_error_mesh(const SampleSet& samples, std::span<const double> d) {
+ErrorMesh lattice_error_mesh(const SampleSet& samples, std::span<const double> d,
+                             std::span<const std::uint32_t> sample_region) {
   // PLY face lists hold signed 32-bit vertex indices.
   if (samples.sample_count() + samples.mesh.vertex_count() >
       std::uint64_t{std::numeric_limits<std::int32_t>::max()}) {
@@ -36,7 +43,11 @@ ErrorMesh lattice_error_mesh(const SampleSet& samples, std::span<const double> d
                     "vertices instead of the lattice",
                     samples.sample_count()));
   }
-  ErrorMesh out{{samples.positions, {}}, std::vector<double>(d.begin(), d.end())};
+  ErrorMesh out{{samples.positions, {}},
+                std::vector<double>(d.begin(), d.end()),
+                sample_region.empty()
+                    ? std::vector<std::uint32_t>(d.size(), kNoRegion)
+                    : std::vector<std::uint32_t>(sample_region.begin(), sample_region.end())};
   const Mesh& workpiece = samples.mesh;
   std::vector<std::uint32_t> extra_vertex(workpiece.vertex_count(), kNoSample);
   const auto corner_vertex = [&](std::uint32_t v) {
@@ -45,6 +56,7 @@ ErrorMesh lattice_error_mesh(const SampleSet& samples, std::span<const double> d
       extra_vertex[v] = static_cast<std::uint32_t>(out.mesh.vertices.size());
       out.mesh.vertices.push_back(workpiece.vertices[v]);
       out.values.push_back(kNoValue);
+      out.regions.push_back(kNoRegion);
     }
     return extra_vertex[v];
   };

@@ -15,7 +15,7 @@ namespace ncv {
 
 namespace {
 
-constexpr std::size_t kVertexBytes = 3 * 4 + 3 + 2 * 4;
+constexpr std::size_t kVertexBytes = 3 * 4 + 3 + 2 * 4 + 4;
 constexpr std::size_t kFaceBytes = 1 + 3 * 4;
 
 // Little-endian fields at a byte position, independent of the host's byte order.
@@ -43,19 +43,20 @@ std::string header(const ErrorMesh& mesh, const ColorMap& map,
   text +=
       "property float x\nproperty float y\nproperty float z\n"
       "property uchar red\nproperty uchar green\nproperty uchar blue\n"
-      "property float quality\nproperty float scalar_signed_distance\n";
+      "property float quality\nproperty float scalar_signed_distance\nproperty int scalar_region\n";
   text += fmt::format("element face {}\n", mesh.mesh.triangle_count());
   text += "property list uchar int vertex_indices\nend_header\n";
   return text;
 }
 
-void put_vertex(char* at, Vec3 p, const Rgb& rgb, double value) {
+void put_vertex(char* at, Vec3 p, const Rgb& rgb, double value, std::uint32_t region) {
   at = put_float(at, p[0]);
   at = put_float(at, p[1]);
   at = put_float(at, p[2]);
   for (const std::uint8_t channel : rgb) *at++ = static_cast<char>(channel);
   at = put_float(at, value);
-  put_float(at, value);
+  at = put_float(at, value);
+  put_u32(at, region);
 }
 
 void put_face(char* at, const Triangle& triangle) {
@@ -82,7 +83,7 @@ Buffer<char> error_ply(const ErrorMesh& mesh, const ColorMap& map,
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t v = range.begin(); v != range.end(); ++v) {
                         put_vertex(vertex_records + v * kVertexBytes, mesh.mesh.vertices[v],
-                                   map.rgb(mesh.values[v]), mesh.values[v]);
+                                   map.rgb(mesh.values[v]), mesh.values[v], mesh.regions[v]);
                       }
                     });
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces, 1 << 15),

@@ -2,7 +2,9 @@
 // (docs/METHOD.md "Colouring"). Per vertex: float x y z (model coordinates), uchar red green blue
 // baked from the colour map, float quality (MeshLab's per-vertex quality) and float
 // scalar_signed_distance (CloudCompare's scalar field), both the signed error, NaN where
-// no sample lies. Faces: list uchar int vertex_indices.
+// no sample lies, and int scalar_region: the out-of-tolerance region the vertex lies in (k
+// for the report's k-th region, 0 for none), so a viewer can select one region by value.
+// Faces: list uchar int vertex_indices.
 #pragma once
 
 #include <span>

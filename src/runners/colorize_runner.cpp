@@ -5,11 +5,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "files/distance_job.hpp"
 #include "render/ply_writer.hpp"
 #include "render/svg_legend.hpp"
+#include "statistics/error_regions.hpp"
+#include "statistics/readable_numbers.hpp"
 #include "util/error.hpp"
 #include "util/output_file.hpp"
 
@@ -43,36 +46,53 @@ ColorMap choose_color_map(const DistanceSet& distances, const ColorizeOptions& o
   return make_color_map(kind, range, options.tolerance);
 }
 
-ColoredSurface colorize(const DistanceSet& distances, const ColorizeOptions& options) {
-  return {choose_color_map(distances, options),
-          options.lattice ? lattice_error_mesh(distances.samples, distances.field.distance)
-                          : workpiece_error_mesh(distances.samples, distances.field.distance)};
+ColoredSurface colorize(const DistanceSet& distances, const ColorizeOptions& options,
+                        std::span<const std::uint32_t> sample_region) {
+  const ColorMap map = choose_color_map(distances, options);
+  RegionMap regions;
+  if (sample_region.empty() && options.tolerance) {
+    regions = map_error_regions(distances.samples, distances.field.distance, *options.tolerance);
+    sample_region = regions.sample_region;
+  }
+  const std::span<const double> d = distances.field.distance;
+  return {map, options.coarse ? workpiece_error_mesh(distances.samples, d, sample_region)
+                              : lattice_error_mesh(distances.samples, d, sample_region)};
 }
 
-Buffer<char> colored_ply(const ColoredSurface& colored, const DistanceSet& distances) {
+Buffer<char> colored_ply(const ColoredSurface& colored, const DistanceSet& distances,
+                         const ColorizeOptions& options) {
   const std::string comments[] = {
       fmt::format("ncverify {} {}: signed error of {} against {}", NCV_VERSION,
                   name_of(kDirectionNames, distances.direction), distances.samples.source,
                   distances.reference.source),
-      "positive = material left (excess), negative = gouge"};
+      "positive = material left (excess), negative = gouge; units " + options.units,
+      "scalar_region = k: the k-th out-of-tolerance region of the report (0: none)"};
   return error_ply(colored.mesh, colored.map, comments);
 }
 
-std::string legend_svg(const ColoredSurface& colored) {
+std::string legend_svg(const ColoredSurface& colored, const DistanceSet& distances,
+                       const ColorizeOptions& options) {
+  const bool forward = distances.direction == Direction::forward;
+  const std::string workpiece = forward ? distances.samples.source : distances.reference.source;
+  std::string part = std::filesystem::path(workpiece).stem().string();
+  if (!forward) part += " (the nominal against it)";
+  const int decimals =
+      number_style(bounding_box(distances.samples.mesh), options.units).length_decimals;
   std::ostringstream svg;
-  write_legend_svg(svg, colored.map, "model units");
+  write_legend_svg(svg, colored.map, PictureText{part, options.units, decimals});
   return svg.str();
 }
 
 void write_colored(const DistanceSet& distances, const ColorizeOptions& options,
-                   const std::string& ply_path, const std::string& legend_path) {
-  const ColoredSurface colored = colorize(distances, options);
-  const Buffer<char> ply = colored_ply(colored, distances);
+                   const std::string& ply_path, const std::string& legend_path,
+                   std::span<const std::uint32_t> sample_region) {
+  const ColoredSurface colored = colorize(distances, options, sample_region);
+  const Buffer<char> ply = colored_ply(colored, distances, options);
   OutputFile out(ply_path, OutputKind::binary);
   std::optional<OutputFile> legend;
   if (!legend_path.empty()) {
     legend.emplace(legend_path, OutputKind::text);
-    legend->write(legend_svg(colored));
+    legend->write(legend_svg(colored, distances, options));
   }
   out.write(ply.data(), ply.size());
   out.commit();

@@ -3,7 +3,9 @@
 // (docs/METHOD.md "Colouring").
 #pragma once
 
+#include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "files/distance_file.hpp"
@@ -19,7 +21,10 @@ struct ColorizeOptions {
   std::optional<Tolerance> tolerance;  // marks the zone; selects the tolerance map by default
   std::optional<ColorMapKind> map;     // default: tolerance with a tolerance, else diverging
   std::optional<ValueRange> range;     // default: from the data (see choose_color_map)
-  bool lattice = false;                // the sampling lattice as the mesh: every sample shows
+  // The sampled mesh's own vertices only (a small file), instead of the sampling lattice
+  // with every sample a vertex (the default: the worst point is in the picture).
+  bool coarse = false;
+  std::string units = "mm";  // named in the legend and the PLY's comments
 };
 
 // Throws UsageError for the tolerance map without a tolerance.
@@ -29,14 +34,20 @@ struct ColoredSurface {
   ColorMap map;
   ErrorMesh mesh;
 };
-ColoredSurface colorize(const DistanceSet& distances, const ColorizeOptions& options);
-Buffer<char> colored_ply(const ColoredSurface& colored, const DistanceSet& distances);
-std::string legend_svg(const ColoredSurface& colored);
+// sample_region: per sample, its out-of-tolerance region (statistics/error_regions.hpp), for
+// the PLY's region property; empty: worked out here from the tolerance, if there is one.
+ColoredSurface colorize(const DistanceSet& distances, const ColorizeOptions& options,
+                        std::span<const std::uint32_t> sample_region = {});
+Buffer<char> colored_ply(const ColoredSurface& colored, const DistanceSet& distances,
+                         const ColorizeOptions& options);
+std::string legend_svg(const ColoredSurface& colored, const DistanceSet& distances,
+                       const ColorizeOptions& options);
 
 // Writes the PLY (and the legend when `legend_svg` is not empty); both are opened before
 // either is committed, so a legend path that cannot be written leaves no PLY either.
 void write_colored(const DistanceSet& distances, const ColorizeOptions& options,
-                   const std::string& ply_path, const std::string& legend_path);
+                   const std::string& ply_path, const std::string& legend_path,
+                   std::span<const std::uint32_t> sample_region = {});
 
 // `ncverify colorize DIST... -o OUT.ply`.
 struct ColorizeJob {

@@ -9,17 +9,27 @@
 #include "util/error.hpp"
 #include "util/input_bytes.hpp"
 #include "util/output_file.hpp"
+#include "util/timestamp.hpp"
 
 namespace ncv {
+
 PartReport make_report(const DistanceSet& distances, const ReportOptions& options) {
   PartReport report = make_part_report(distances, options.tolerance, options.histogram);
   report.listed_regions = options.regions;
+  report.units = options.units;
   return report;
+}
+
+Traceability traceability(const std::string& command_line) {
+  Traceability trace;
+  trace.date = report_timestamp();
+  trace.command_line = command_line;
+  return trace;
 }
 
 VerificationReport make_verification_report(const DistanceSet& main, const DistanceSet* reverse,
                                             const ReportOptions& options) {
-  VerificationReport report{make_report(main, options), std::nullopt};
+  VerificationReport report{make_report(main, options), std::nullopt, {}};
   if (reverse) report.reverse = make_report(*reverse, options);
   return report;
 }
@@ -28,8 +38,23 @@ std::string histogram_svg(const PartReport& report) {
   std::ostringstream svg;
   const std::optional<ToleranceAreas>& tolerance = report.statistics.tolerance;
   write_histogram_svg(svg, report.statistics.histogram,
-                      tolerance ? std::optional<Tolerance>(tolerance->tolerance) : std::nullopt);
+                      tolerance ? std::optional<Tolerance>(tolerance->tolerance) : std::nullopt,
+                      picture_text(report));
   return svg.str();
+}
+
+std::deque<OutputFile> write_report_files(const PartReport& report, const ReportFiles& files) {
+  std::deque<OutputFile> outputs;
+  if (!files.histogram_svg.empty()) {
+    outputs.emplace_back(files.histogram_svg, OutputKind::text).write(histogram_svg(report));
+  }
+  if (!files.regions_csv.empty()) {
+    outputs.emplace_back(files.regions_csv, OutputKind::text).write(regions_csv(report));
+  }
+  if (!files.histogram_csv.empty()) {
+    outputs.emplace_back(files.histogram_csv, OutputKind::text).write(histogram_csv(report));
+  }
+  return outputs;
 }
 
 int run_stats(const StatsJob& job) {
@@ -40,19 +65,16 @@ int run_stats(const StatsJob& job) {
     return 0;
   }
   const PartDistances part = read_part_distances(job.distances, job.samples);
-  const VerificationReport report =
+  VerificationReport report =
       make_verification_report(part.main, part.reverse ? &*part.reverse : nullptr, job.options);
-  // Both outputs open before either is committed: a histogram path that cannot be
-  // written leaves no report either.
+  report.trace = traceability(job.command_line);
+  // Every output open before any is committed: a histogram path that cannot be written
+  // leaves no report either.
   OutputFile out(job.output, OutputKind::text);
-  std::optional<OutputFile> histogram;
-  if (!job.histogram_svg.empty()) {
-    histogram.emplace(job.histogram_svg, OutputKind::text);
-    histogram->write(histogram_svg(report.main));
-  }
+  std::deque<OutputFile> extras = write_report_files(report.main, job.files);
   out.write(format_report(report, job.format, job.csv_header));
   out.commit();
-  if (histogram) histogram->commit();
+  for (OutputFile& extra : extras) extra.commit();
   return verdict_status(report);
 }
 

@@ -3,6 +3,7 @@
 // regions, as text, JSON or CSV, and the histogram as SVG.
 #pragma once
 
+#include <deque>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "statistics/area_histogram.hpp"
 #include "statistics/statistics_report.hpp"
 #include "statistics/tolerance.hpp"
+#include "util/output_file.hpp"
 
 namespace ncv {
 
@@ -18,15 +20,30 @@ struct ReportOptions {
   std::optional<Tolerance> tolerance;  // none: no verdict, no regions
   HistogramOptions histogram;          // 64 bins over [d_min, d_max] unless given
   std::size_t regions = 20;            // regions listed (all are counted)
+  std::string units = "mm";            // of the model's coordinates, named in every report
 };
 
 PartReport make_report(const DistanceSet& distances, const ReportOptions& options);
+// What the reports record of this run: ncverify's version, now (util/timestamp.hpp) and the
+// command line.
+Traceability traceability(const std::string& command_line);
+
 // The report of one direction, or of both (`reverse` not null: the reverse direction of the
 // same part, which check_same_part vouches for).
 VerificationReport make_verification_report(const DistanceSet& main, const DistanceSet* reverse,
                                             const ReportOptions& options);
-// The area-weighted histogram as SVG, with the tolerance limits.
+// The area-weighted histogram as SVG, with the tolerance limits, the part's name and units.
 std::string histogram_svg(const PartReport& report);
+
+// The report's optional files (histogram SVG, regions CSV, histogram CSV, of the main
+// direction; empty paths are skipped), opened and written but not committed: the caller
+// commits them with its own outputs, so that one path that cannot be written leaves none.
+struct ReportFiles {
+  std::string histogram_svg;
+  std::string regions_csv;
+  std::string histogram_csv;
+};
+std::deque<OutputFile> write_report_files(const PartReport& report, const ReportFiles& files);
 
 // `ncverify stats DIST...`.
 struct StatsJob {
@@ -37,8 +54,9 @@ struct StatsJob {
   ReportFormat format = ReportFormat::text;
   bool csv_header = true;        // false: --no-header, the row alone
   bool csv_header_only = false;  // --csv-header: the header line alone, no input read
-  std::string histogram_svg;     // empty: none
+  ReportFiles files;             // empty paths: none
   ReportOptions options;
+  std::string command_line;  // for the JSON's traceability
 };
 // The exit status: 0 within tolerance or without one, 1 out of tolerance.
 int run_stats(const StatsJob& job);

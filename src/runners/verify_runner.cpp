@@ -151,34 +151,49 @@ int run_verification(const RunJob& job) {
         phases);
   }
 
-  const VerificationReport report =
+  VerificationReport report =
       make_verification_report(forward, reverse ? &*reverse : nullptr, options.report);
+  report.trace = traceability(job.command_line);
   if (keep_reports) {
     write_file(folder / (part + ".report.txt"), OutputKind::text,
                [&](OutputFile& out) { out.write(format_report(report, ReportFormat::text)); });
     write_file(folder / (part + ".report.json"), OutputKind::text,
                [&](OutputFile& out) { out.write(format_report(report, ReportFormat::json)); });
   }
-  if (keep_reports || !job.histogram_svg.empty()) {
-    write_file(in_folder(job.histogram_svg, folder / (part + ".histogram.svg")), OutputKind::text,
-               [&](OutputFile& out) { out.write(histogram_svg(report.main)); });
-  }
+  const auto files = [&](const std::string& prefix, const std::string& histogram) {
+    if (!keep_reports) return ReportFiles{histogram, "", ""};
+    return ReportFiles{histogram, (folder / (prefix + ".regions.csv")).string(),
+                       (folder / (prefix + ".histogram.csv")).string()};
+  };
+  const std::string histogram =
+      keep_reports ? in_folder(job.histogram_svg, folder / (part + ".histogram.svg")).string()
+                   : job.histogram_svg;
+  for (OutputFile& out : write_report_files(report.main, files(part, histogram))) out.commit();
   if (keep_reports && report.reverse) {
-    write_file(folder / (part + ".reverse.histogram.svg"), OutputKind::text,
-               [&](OutputFile& out) { out.write(histogram_svg(*report.reverse)); });
+    const std::string prefix = part + ".reverse";
+    for (OutputFile& out : write_report_files(
+             *report.reverse, files(prefix, (folder / (prefix + ".histogram.svg")).string()))) {
+      out.commit();
+    }
   }
   phases.done("stats");
 
   if (keep_reports) {
     ColorizeOptions colorize = options.colorize;
     colorize.tolerance = options.report.tolerance;
+    colorize.units = options.report.units;
     write_colored(forward, colorize, (folder / (part + ".ply")).string(),
-                  in_folder(job.legend_svg, folder / (part + ".legend.svg")).string());
+                  in_folder(job.legend_svg, folder / (part + ".legend.svg")).string(),
+                  report.main.sample_region);
     if (reverse) {
       write_colored(*reverse, colorize, (folder / (part + ".reverse.ply")).string(),
-                    (folder / (part + ".reverse.legend.svg")).string());
+                    (folder / (part + ".reverse.legend.svg")).string(),
+                    report.reverse->sample_region);
     }
     phases.done("colorize");
+    write_file(folder / (part + ".report.html"), OutputKind::text,
+               [&](OutputFile& out) { out.write(html_page(report, colorize)); });
+    phases.done("html");
   }
 
   OutputFile out("-", OutputKind::text);

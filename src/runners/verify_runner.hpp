@@ -8,6 +8,7 @@
 #include "runners/colorize_runner.hpp"
 #include "runners/distance_runner.hpp"
 #include "runners/grid_runner.hpp"
+#include "runners/html_runner.hpp"
 #include "runners/report_runner.hpp"
 #include "runners/sample_runner.hpp"
 
@@ -41,6 +42,7 @@ struct RunJob {
   std::string timings;        // where to write the phase times; empty: nowhere
   std::string histogram_svg;  // empty: PART.histogram.svg in the folder
   std::string legend_svg;     // empty: PART.legend.svg in the folder
+  std::string command_line;   // for the reports' traceability
 };
 
 // The exit status: 0 within tolerance (both directions) or without one, 1 out of tolerance.

@@ -83,25 +83,44 @@ class RegionBuilder {
 
   std::vector<ErrorRegion> regions() {
     std::vector<ErrorRegion> regions;
-    region_of_root_.assign(d_.size(), kNoRegion);
+    region_of_root_.assign(d_.size(), kUnassigned);
     for (std::uint64_t s = 0; s < d_.size(); ++s) {
       if (!kind_[s]) continue;
       std::size_t& index = region_of_root_[sets_.find(s)];
-      if (index == kNoRegion) {
+      if (index == kUnassigned) {
         index = regions.size();
         regions.push_back({*kind_[s], 0, {d_[s], s, samples_.positions[s]}, 0, {}});
       }
       add_sample(regions[index], s);
     }
     add_areas(regions);
-    std::sort(regions.begin(), regions.end(), [](const ErrorRegion& a, const ErrorRegion& b) {
-      return a.area != b.area ? a.area > b.area : a.extreme.sample < b.extreme.sample;
+    order_.resize(regions.size());
+    for (std::size_t k = 0; k < order_.size(); ++k) order_[k] = k;
+    std::sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) {
+      const ErrorRegion &x = regions[a], &y = regions[b];
+      return x.area != y.area ? x.area > y.area : x.extreme.sample < y.extreme.sample;
     });
-    return regions;
+    std::vector<ErrorRegion> sorted;
+    sorted.reserve(regions.size());
+    for (const std::size_t k : order_) sorted.push_back(regions[k]);
+    return sorted;
+  }
+
+  // Per sample: 1 + its region's place in the order regions() returned, or kNoRegion.
+  std::vector<std::uint32_t> sample_regions() {
+    std::vector<std::uint32_t> rank(order_.size());
+    for (std::size_t k = 0; k < order_.size(); ++k) {
+      rank[order_[k]] = static_cast<std::uint32_t>(k + 1);
+    }
+    std::vector<std::uint32_t> labels(d_.size(), kNoRegion);
+    for (std::uint64_t s = 0; s < d_.size(); ++s) {
+      if (kind_[s]) labels[s] = rank[region_of_root_[sets_.find(s)]];
+    }
+    return labels;
   }
 
  private:
-  static constexpr std::size_t kNoRegion = ~std::size_t{0};
+  static constexpr std::size_t kUnassigned = ~std::size_t{0};
 
   void connect(std::uint64_t a, std::uint64_t b) {
     if (kind_[a] && kind_[a] == kind_[b]) sets_.unite(a, b);
@@ -177,6 +196,7 @@ class RegionBuilder {
   DisjointSets sets_;
   std::vector<std::optional<RegionKind>> kind_;
   std::vector<std::size_t> region_of_root_;  // per sample: its region when it is a root
+  std::vector<std::size_t> order_;           // regions in reported order (largest first)
 };
 
 }  // namespace
@@ -187,6 +207,17 @@ std::vector<ErrorRegion> find_error_regions(const SampleSet& samples, std::span<
   builder.connect_lattices();
   builder.connect_across_edges();
   return builder.regions();
+}
+
+RegionMap map_error_regions(const SampleSet& samples, std::span<const double> d,
+                            const Tolerance& tolerance) {
+  RegionBuilder builder(samples, d, tolerance);
+  builder.connect_lattices();
+  builder.connect_across_edges();
+  RegionMap map;
+  map.regions = builder.regions();
+  map.sample_region = builder.sample_regions();
+  return map;
 }
 
 }  // namespace ncv

@@ -33,4 +33,14 @@ struct ErrorRegion {
 std::vector<ErrorRegion> find_error_regions(const SampleSet& samples, std::span<const double> d,
                                             const Tolerance& tolerance);
 
+// The regions together with which region each sample belongs to, so that a picture can
+// name the region under a point (the PLY's region property, the HTML report).
+inline constexpr std::uint32_t kNoRegion = 0;
+struct RegionMap {
+  std::vector<ErrorRegion> regions;          // as find_error_regions
+  std::vector<std::uint32_t> sample_region;  // per sample: k + 1 for regions[k], else kNoRegion
+};
+RegionMap map_error_regions(const SampleSet& samples, std::span<const double> d,
+                            const Tolerance& tolerance);
+
 }  // namespace ncv

@@ -83,10 +83,6 @@ void append(fmt::memory_buffer& out, fmt::format_string<Args...> format, Args&&.
   fmt::format_to(std::back_inserter(out), format, std::forward<Args>(args)...);
 }
 
-std::string format_point(Vec3 p) {
-  return fmt::format("({}, {}, {})", p[0], p[1], p[2]);
-}
-
 const char* verdict_word(bool fails) {
   return fails ? "FAIL" : "PASS";
 }
@@ -95,11 +91,12 @@ std::string direction_title(const PartReport& r) {
   return forward(r) ? "forward (workpiece samples)" : "reverse (nominal samples)";
 }
 
-void text_header(const std::vector<const PartReport*>& reports, fmt::memory_buffer& out) {
+void text_header(const std::vector<const PartReport*>& reports, const NumberStyle& n,
+                 fmt::memory_buffer& out) {
   const PartReport& first = *reports.front();
-  const auto sampled_line = [](const PartReport& r) {
+  const auto sampled_line = [&](const PartReport& r) {
     return fmt::format("{}: {} triangles, area {}", r.distances->samples.source,
-                       r.statistics.triangles, r.statistics.workpiece_area);
+                       r.statistics.triangles, n.area_with_units(r.statistics.workpiece_area));
   };
   const auto reference_line = [](const PartReport& r) {
     return fmt::format("{}: {} triangles", r.distances->reference.source,
@@ -118,9 +115,10 @@ void text_header(const std::vector<const PartReport*>& reports, fmt::memory_buff
     const ErrorStatistics& s = r->statistics;
     append(out,
            "{:<11} step {} ({}), scheme {}: {} samples of the {}; {} triangles sampled at their "
-           "vertices only, {} not sampled; {} search, {} triangles tested per sample, sign by "
-           "{}\n",
-           name_of(kDirectionNames, d.direction), d.samples.step, d.samples.step_spec,
+           "vertices only, {} not sampled; {} search, {:.2f} triangles tested per sample, sign "
+           "by {}\n",
+           name_of(kDirectionNames, d.direction), n.length_with_units(d.samples.step),
+           d.samples.step_spec,
            d.samples.scheme == SamplingScheme::all ? "all (paper I)" : "paper-ii", s.samples,
            forward(*r) ? "workpiece" : "nominal", s.triangles_vertex_only, s.triangles_unsampled,
            d.search, d.triangles_tested_per_sample(), d.sign_method);
@@ -137,12 +135,13 @@ void text_row(fmt::memory_buffer& out, const std::string& label,
   append(out, "\n");
 }
 
-void text_errors(const std::vector<const PartReport*>& reports, fmt::memory_buffer& out) {
-  append(out, "error (signed: + material left, - gouge)\n");
+void text_errors(const std::vector<const PartReport*>& reports, const NumberStyle& n,
+                 fmt::memory_buffer& out) {
+  append(out, "error in {} (signed: + material left, - gouge)\n", n.units);
   append(out, "  {:<14}", "");
   for (const PartReport* r : reports) append(out, "{:<40}", direction_title(*r));
   append(out, "\n");
-  const auto number = [](double value) { return fmt::format("{}", value); };
+  const auto number = [&](double value) { return n.length(value); };
   text_row(out, "max", reports,
            [&](const PartReport& r) { return number(r.statistics.max.value); });
   text_row(out, "min", reports,
@@ -159,37 +158,41 @@ void text_errors(const std::vector<const PartReport*>& reports, fmt::memory_buff
              [&](const PartReport& r) { return number(r.statistics.percentiles[k].value); });
   }
   text_row(out, "sampled area", reports, [&](const PartReport& r) {
-    return fmt::format("{} of {}", r.statistics.sampled_area, r.statistics.workpiece_area);
+    return fmt::format("{} of {}", n.area(r.statistics.sampled_area),
+                       n.area_with_units(r.statistics.workpiece_area));
   });
   for (const PartReport* r : reports) {
     append(out, "  {} max at {}, min at {}\n", name_of(kDirectionNames, r->distances->direction),
-           format_point(r->statistics.max.position), format_point(r->statistics.min.position));
+           n.point(r->statistics.max.position), n.point(r->statistics.min.position));
   }
 }
 
-void text_regions(const PartReport& r, fmt::memory_buffer& out) {
+void text_regions(const PartReport& r, const NumberStyle& n, fmt::memory_buffer& out) {
   if (r.regions.empty()) return;
   append(out, "\nout-of-tolerance regions, {}: {} excess, {} gouge (largest first)\n",
          name_of(kDirectionNames, r.distances->direction), count_regions(r, RegionKind::excess),
          count_regions(r, RegionKind::gouge));
-  append(out, "  {:>3}  {:<6}  {:<22}  {:<22}  {}\n", "#", "kind", "area", "extreme", "at");
+  append(out, "  {:>3}  {:<6}  {:>14}  {:>12}  {}\n", "#", "kind", "area (" + n.units + "\u00b2)",
+         "extreme (" + n.units + ")", "at");
   for (std::size_t k = 0; k < r.regions.size() && k < r.listed_regions; ++k) {
     const ErrorRegion& e = r.regions[k];
-    append(out, "  {:>3}  {:<6}  {:<22}  {:<22}  {}\n", k + 1, kind_name(e.kind), e.area,
-           e.extreme.value, format_point(e.extreme.position));
+    append(out, "  {:>3}  {:<6}  {:>14}  {:>12}  {}\n", k + 1, kind_name(e.kind), n.area(e.area),
+           n.length(e.extreme.value), n.point(e.extreme.position));
   }
   if (r.regions.size() > r.listed_regions) {
-    append(out, "  ... {} more\n", r.regions.size() - r.listed_regions);
+    append(out, "  ... {} more (all in the regions CSV)\n", r.regions.size() - r.listed_regions);
   }
 }
 
-void text_tolerance(const std::vector<const PartReport*>& reports, fmt::memory_buffer& out) {
+void text_tolerance(const std::vector<const PartReport*>& reports, const NumberStyle& n,
+                    fmt::memory_buffer& out) {
   const std::optional<ToleranceAreas>& zone = reports.front()->statistics.tolerance;
   if (!zone) return;
-  append(out, "\ntolerance [{}, {}]\n", zone->tolerance.lower, zone->tolerance.upper);
-  const auto share = [](const PartReport& r, double ToleranceAreas::*area) {
+  append(out, "\ntolerance [{}, {}] {}\n", zone->tolerance.lower, zone->tolerance.upper, n.units);
+  const auto share = [&](const PartReport& r, double ToleranceAreas::*area) {
     const ErrorStatistics& s = r.statistics;
-    return fmt::format("{} ({:.2f} %)", (*s.tolerance).*area, 100 * s.share((*s.tolerance).*area));
+    return fmt::format("{} ({:.2f} %)", n.area_with_units((*s.tolerance).*area),
+                       100 * s.share((*s.tolerance).*area));
   };
   text_row(out, "within", reports,
            [&](const PartReport& r) { return share(r, &ToleranceAreas::within); });
@@ -199,7 +202,7 @@ void text_tolerance(const std::vector<const PartReport*>& reports, fmt::memory_b
            [&](const PartReport& r) { return share(r, &ToleranceAreas::gouge); });
   text_row(out, "verdict", reports,
            [&](const PartReport& r) { return std::string(verdict_word(r.fails())); });
-  for (const PartReport* r : reports) text_regions(*r, out);
+  for (const PartReport* r : reports) text_regions(*r, n, out);
 }
 
 std::vector<const PartReport*> directions(const VerificationReport& report) {
@@ -249,6 +252,25 @@ nlohmann::json direction_json(const PartReport& r) {
   return j;
 }
 
+nlohmann::json traceability_json(const VerificationReport& report) {
+  const DistanceSet& d = *report.main.distances;
+  const bool fwd = forward(report.main);
+  const auto input = [](const char* role, const std::string& path, std::uint64_t hash,
+                        std::uint64_t triangles) {
+    return nlohmann::json{
+        {"role", role}, {"path", path}, {"hash", hash_hex(hash)}, {"triangles", triangles}};
+  };
+  const nlohmann::json sampled = input(fwd ? "workpiece" : "nominal", d.samples.source,
+                                       d.samples.mesh_hash, d.samples.mesh.triangle_count());
+  const nlohmann::json reference = input(fwd ? "nominal" : "workpiece", d.reference.source,
+                                         d.reference.hash, d.reference.triangles);
+  return {
+      {"version", report.trace.version},
+      {"date", report.trace.date},
+      {"command_line", report.trace.command_line},
+      {"inputs", fwd ? nlohmann::json{sampled, reference} : nlohmann::json{reference, sampled}}};
+}
+
 std::string csv_quoted(const std::string& text) {
   std::string escaped;
   for (char c : text) escaped += c == '"' ? std::string("\"\"") : std::string(1, c);
@@ -268,9 +290,15 @@ PartReport make_part_report(const DistanceSet& distances, const std::optional<To
   report.statistics =
       compute_error_statistics(distances.samples, distances.field.distance, tolerance, histogram);
   if (tolerance) {
-    report.regions = find_error_regions(distances.samples, distances.field.distance, *tolerance);
+    RegionMap regions = map_error_regions(distances.samples, distances.field.distance, *tolerance);
+    report.regions = std::move(regions.regions);
+    report.sample_region = std::move(regions.sample_region);
   }
   return report;
+}
+
+NumberStyle report_number_style(const PartReport& report) {
+  return number_style(bounding_box(report.distances->samples.mesh), report.units);
 }
 
 std::optional<double> VerificationReport::hausdorff() const {
@@ -285,18 +313,21 @@ nlohmann::json report_json(const VerificationReport& report) {
     j["hausdorff"] = *report.hausdorff();
   }
   if (report.main.statistics.tolerance) j["verdict"] = report.fails() ? "fail" : "pass";
+  j["units"] = report.main.units;
+  j["traceability"] = traceability_json(report);
   return j;
 }
 
 std::string report_text(const VerificationReport& report) {
   const std::vector<const PartReport*> reports = directions(report);
+  const NumberStyle numbers = report_number_style(report.main);
   fmt::memory_buffer out;
-  text_header(reports, out);
-  text_errors(reports, out);
+  text_header(reports, numbers, out);
+  text_errors(reports, numbers, out);
   if (const std::optional<double> h = report.hausdorff()) {
-    append(out, "  two-sided Hausdorff distance {}\n", *h);
+    append(out, "  two-sided Hausdorff distance {}\n", numbers.length_with_units(*h));
   }
-  text_tolerance(reports, out);
+  text_tolerance(reports, numbers, out);
   if (report.main.statistics.tolerance) {
     append(out, "\nverdict     {}\n", verdict_word(report.fails()));
   }
@@ -339,6 +370,34 @@ std::string report_csv_row(const VerificationReport& report) {
   }
   row += s.tolerance ? (report.fails() ? ",fail" : ",pass") : ",";
   return row + "\n";
+}
+
+std::string regions_csv(const PartReport& r) {
+  std::string csv =
+      "region,kind,area,extreme,extreme_sample,extreme_x,extreme_y,extreme_z,samples,"
+      "bbox_min_x,bbox_min_y,bbox_min_z,bbox_max_x,bbox_max_y,bbox_max_z\n";
+  for (std::size_t k = 0; k < r.regions.size(); ++k) {
+    const ErrorRegion& e = r.regions[k];
+    const Vec3 p = e.extreme.position;
+    csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", k + 1, kind_name(e.kind),
+                       e.area, e.extreme.value, e.extreme.sample, p[0], p[1], p[2], e.samples,
+                       e.box.min[0], e.box.min[1], e.box.min[2], e.box.max[0], e.box.max[1],
+                       e.box.max[2]);
+  }
+  return csv;
+}
+
+std::string histogram_csv(const PartReport& r) {
+  const Histogram& h = r.statistics.histogram;
+  std::string csv = "bin,lo,hi,area,share\n";
+  const auto share = [&](double area) { return h.total_area > 0 ? area / h.total_area : 0.0; };
+  csv += fmt::format("below,,{},{},{}\n", h.range.lo, h.below_range, share(h.below_range));
+  for (std::size_t k = 0; k < h.bin_count(); ++k) {
+    csv +=
+        fmt::format("{},{},{},{},{}\n", k, h.edge(k), h.edge(k + 1), h.area[k], share(h.area[k]));
+  }
+  csv += fmt::format("above,{},,{},{}\n", h.range.hi, h.above_range, share(h.above_range));
+  return csv;
 }
 
 std::string format_report(const VerificationReport& report, ReportFormat format, bool csv_header) {

@@ -1,8 +1,9 @@
 // The stats report: ErrorStatistics and the out-of-tolerance regions of one part, in one or
 // both directions (distance/direction.hpp), as a readable text table, as JSON (stable keys,
 // documented in docs/REPORTS.md) or as CSV (one header line and one row, so the rows of many
-// parts concatenate into one table). Numbers are written in their shortest round-tripping
-// form.
+// parts concatenate into one table). JSON and CSV numbers are written in their shortest
+// round-tripping form; the text report rounds them to what the measurement supports
+// (statistics/readable_numbers.hpp) and names the units.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -13,6 +14,7 @@
 #include "files/distance_file.hpp"
 #include "statistics/error_regions.hpp"
 #include "statistics/error_statistics.hpp"
+#include "statistics/readable_numbers.hpp"
 #include "util/enum_names.hpp"
 
 namespace ncv {
@@ -22,8 +24,10 @@ struct PartReport {
   std::string part;  // the workpiece's file stem
   const DistanceSet* distances = nullptr;
   ErrorStatistics statistics;
-  std::vector<ErrorRegion> regions;  // empty without a tolerance
-  std::size_t listed_regions = 20;   // regions written out (all are counted)
+  std::vector<ErrorRegion> regions;          // empty without a tolerance
+  std::vector<std::uint32_t> sample_region;  // per sample (RegionMap); empty without one
+  std::size_t listed_regions = 20;           // regions written out (all are counted)
+  std::string units = "mm";                  // of lengths; areas are in units²
 
   // Within the tolerance zone at every sample (false without a tolerance).
   bool fails() const { return statistics.tolerance && !statistics.tolerance->pass; }
@@ -32,11 +36,22 @@ struct PartReport {
 PartReport make_part_report(const DistanceSet& distances, const std::optional<Tolerance>& tolerance,
                             const HistogramOptions& histogram);
 
+// The numbers of the text report: rounded to the sampled surface's resolution, in its units.
+NumberStyle report_number_style(const PartReport& report);
+
+// Where a report came from, so that a result found later can be traced to its inputs.
+struct Traceability {
+  std::string version = NCV_VERSION;  // of ncverify
+  std::string date;                   // ISO 8601, UTC
+  std::string command_line;           // as typed, arguments quoted where needed
+};
+
 // A part's report: `main` is the forward direction, or the only direction measured; `reverse`
 // is there when both were. The part fails when either direction does.
 struct VerificationReport {
   PartReport main;
   std::optional<PartReport> reverse;
+  Traceability trace{};
 
   bool fails() const { return main.fails() || (reverse && reverse->fails()); }
   // The two-sided Hausdorff distance: the larger max |d| of the two directions.
@@ -47,6 +62,11 @@ nlohmann::json report_json(const VerificationReport& report);
 std::string report_text(const VerificationReport& report);
 std::string report_csv_header();
 std::string report_csv_row(const VerificationReport& report);
+// Every out-of-tolerance region of one direction, one row each, largest first (not only the
+// listed ones).
+std::string regions_csv(const PartReport& report);
+// The area-weighted histogram of one direction, one row per bin, with the area outside it.
+std::string histogram_csv(const PartReport& report);
 
 enum class ReportFormat { text, json, csv };
 inline constexpr EnumName<ReportFormat> kReportFormatNames[] = {

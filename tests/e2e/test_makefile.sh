@@ -18,6 +18,8 @@ check "the gouged core fails" grep -q '^"core_finishing".*,fail$' out/summary.cs
 check "summary line counts the parts" grep -q "4 parts within tolerance 0.25, 1 out of it" make1.log
 check "one grid per nominal" test "$(ls out/*.grid | wc -l)" -eq 2
 check "every part is coloured" test "$(ls out/*.ply | wc -l)" -eq 5
+check "every part has its HTML report" test "$(ls out/*.report.html | wc -l)" -eq 5
+check "every part lists its regions" test "$(ls out/*.regions.csv | wc -l)" -eq 5
 
 batch -j2 -k >make2.log 2>&1
 check "nothing is redone when nothing changed" test "$(grep -c 'ncverify.* sample\|distance\|grid-build' make2.log)" -eq 0

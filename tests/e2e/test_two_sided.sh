@@ -56,7 +56,7 @@ for key in ('error', 'histogram', 'tolerance'):
     assert a['reverse'][key] == b['reverse'][key], 'reverse ' + key
 assert a['hausdorff'] == b['hausdorff'] and a['verdict'] == b['verdict'] == 'fail'"
 check "inspect says which direction a file measures" grep -q '"direction":"reverse"' <("$NCVERIFY" inspect n.dist --json | tr -d ' \n')
-"$NCVERIFY" -q colorize n.dist -o n.ply --tol 0.6
+"$NCVERIFY" -q colorize n.dist -o n.ply --tol 0.6 --coarse
 "$NCVERIFY" inspect n.samples --json > n.samples.json
 check "colorize paints the nominal for a reverse file" grep -q "element vertex $(json n.samples.json "d['meta']['mesh']['vertices']")" <(head -c 2000 n.ply | tr -d '\0')
 check "the PLY says which direction it shows" grep -q "comment ncverify .* reverse" <(head -c 2000 n.ply | tr -d '\0')

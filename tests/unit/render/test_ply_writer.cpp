@@ -21,6 +21,7 @@
 #include "render/ply_writer.hpp"
 #include "sampling/lattice_triangles.hpp"
 #include "sampling/sampling.hpp"
+#include "statistics/error_regions.hpp"
 #include "stats_fixtures.hpp"
 
 using ncv::ErrorMesh;
@@ -32,7 +33,7 @@ namespace {
 namespace fs = std::filesystem;
 using OpenMeshTriMesh = OpenMesh::TriMesh_ArrayKernelT<>;
 
-constexpr std::size_t kVertexBytes = 3 * 4 + 3 + 2 * 4;
+constexpr std::size_t kVertexBytes = 3 * 4 + 3 + 2 * 4 + 4;
 
 struct PlyFile {
   std::vector<std::string> header;  // lines up to and including end_header
@@ -119,6 +120,7 @@ TEST_CASE("the PLY header declares the documented layout", "[ply]") {
       "property uchar blue",
       "property float quality",
       "property float scalar_signed_distance",
+      "property int scalar_region",
       "element face 8",
       "property list uchar int vertex_indices",
       "end_header"};
@@ -262,4 +264,34 @@ TEST_CASE("vertices without a sample are grey with NaN errors", "[ply]") {
   CHECK(ncv::workpiece_error_mesh(samples, d).mesh.triangle_count() == 2);
   CHECK(ncv::lattice_error_mesh(samples, d).mesh.triangle_count() ==
         ncv::lattice_triangle_count(samples.lattice_sizes[0]) + 1);
+}
+
+TEST_CASE("every PLY vertex names its out-of-tolerance region", "[ply]") {
+  // Error x - 0.5 on the unit square: with a zone of +-0.25 the band x < 0.25 is one gouge
+  // region and x > 0.75 one excess region.
+  const SampleSet samples =
+      ncv::sample_mesh(ncv::test::flat_grid(2, 1.0), 0.1, ncv::SamplingScheme::all);
+  const auto d = ncv::test::distances_of(samples, [](Vec3 p) { return p[0] - 0.5; });
+  const ncv::Tolerance zone{-0.25, 0.25};
+  const ncv::RegionMap regions = ncv::map_error_regions(samples, d, zone);
+  REQUIRE(regions.regions.size() == 2);
+  for (const ErrorMesh& mesh : {ncv::lattice_error_mesh(samples, d, regions.sample_region),
+                                ncv::workpiece_error_mesh(samples, d, regions.sample_region)}) {
+    const PlyFile file = split(to_ply(mesh, kMap));
+    for (std::size_t v = 0; v < mesh.mesh.vertex_count(); ++v) {
+      const double value = mesh.values[v];
+      const std::int32_t region = int_at(file.body, v * kVertexBytes + 23);
+      if (ncv::classify(value, zone) == ncv::ToleranceClass::within) {
+        CHECK(region == 0);
+        continue;
+      }
+      REQUIRE(region >= 1);
+      REQUIRE(region <= 2);
+      const ncv::RegionKind kind = regions.regions[region - 1].kind;
+      CHECK(kind == (value > 0 ? ncv::RegionKind::excess : ncv::RegionKind::gouge));
+    }
+  }
+  // Without a tolerance no vertex is in a region.
+  const PlyFile plain = split(to_ply(ncv::lattice_error_mesh(samples, d), kMap));
+  CHECK(int_at(plain.body, 23) == 0);
 }

@@ -115,3 +115,39 @@ TEST_CASE("a surface within tolerance has no regions", "[regions]") {
   const auto d = distances_of(samples, [](Vec3 p) { return 0.01 * p[0]; });
   CHECK(ncv::find_error_regions(samples, d, {-0.01, 0.01}).empty());
 }
+
+TEST_CASE("the region map labels every out-of-tolerance sample with its region", "[regions]") {
+  const Disc gouge{{3, 3, 0}, 1.0, 0.2}, bump{{7, 6, 0}, 1.5, -0.3};
+  const SampleSet samples =
+      ncv::sample_mesh(ncv::test::flat_grid(10, 10.0), 0.1, ncv::SamplingScheme::all);
+  const auto d = distances_of(samples, [&](Vec3 p) { return dent(gouge, p) + dent(bump, p); });
+  const Tolerance zone{-0.01, 0.01};
+  const ncv::RegionMap map = ncv::map_error_regions(samples, d, zone);
+  REQUIRE(map.regions.size() == 2);
+  CHECK(map.regions[0].kind == RegionKind::excess);  // the larger disc
+  CHECK(map.regions[1].kind == RegionKind::gouge);
+  // The same regions as find_error_regions, in the same order.
+  const std::vector<ErrorRegion> found = ncv::find_error_regions(samples, d, zone);
+  REQUIRE(found.size() == 2);
+  for (std::size_t k = 0; k < 2; ++k) {
+    CHECK(found[k].area == map.regions[k].area);
+    CHECK(found[k].extreme.sample == map.regions[k].extreme.sample);
+  }
+  REQUIRE(map.sample_region.size() == samples.sample_count());
+  std::uint64_t counted[3] = {0, 0, 0};
+  for (std::uint64_t s = 0; s < samples.sample_count(); ++s) {
+    const std::uint32_t label = map.sample_region[s];
+    ++counted[label];
+    if (ncv::classify(d[s], zone) == ncv::ToleranceClass::within) {
+      CHECK(label == ncv::kNoRegion);
+      continue;
+    }
+    REQUIRE(label != ncv::kNoRegion);
+    const Disc& disc = map.regions[label - 1].kind == RegionKind::gouge ? gouge : bump;
+    CHECK(ncv::norm(samples.positions[s] - disc.centre) < disc.radius);
+  }
+  CHECK(counted[1] == map.regions[0].samples);
+  CHECK(counted[2] == map.regions[1].samples);
+  CHECK(map.sample_region[map.regions[0].extreme.sample] == 1);
+  CHECK(map.sample_region[map.regions[1].extreme.sample] == 2);
+}

@@ -1,6 +1,7 @@
 // The stats report: JSON, CSV and text agree with the statistics and with each other.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <sstream>
 
 #include "statistics/statistics_report.hpp"
@@ -149,4 +150,86 @@ TEST_CASE("both directions: the reverse object, the Hausdorff distance, one verd
   CHECK_THAT(text, Catch::Contains("reverse (nominal samples)"));
   CHECK_THAT(text, Catch::Contains("two-sided Hausdorff distance"));
   CHECK_THAT(text, Catch::EndsWith("verdict     FAIL\n"));
+}
+
+TEST_CASE("the text report rounds to the part's resolution and names the units", "[report]") {
+  DistanceSet part = linear_field_part();
+  // Rounding noise where the field is 0, as exact arithmetic on float input leaves it.
+  for (double& d : part.field.distance) {
+    if (std::abs(d) < 1e-12) d = -1.5888e-14;
+  }
+  VerificationReport report{make_part_report(part, Tolerance{-0.1, 0.5}, {}), {}};
+  report.main.units = "in";
+  const std::string text = report_text(report);
+  // The 10 x 10 plate: diagonal 14.1, resolution 1.4e-5, 5 decimals.
+  CHECK_THAT(text, Catch::Contains("max           0.80000 "));
+  CHECK_THAT(text, Catch::Contains("min           -0.20000 "));
+  CHECK_THAT(text, Catch::Contains("error in in"));
+  CHECK_THAT(text, Catch::Contains("tolerance [-0.1, 0.5] in"));
+  CHECK_THAT(text, Catch::Contains("in\u00b2"));
+  CHECK_THAT(text, Catch::Contains("sampled area  100.0000 of 100.0000 in\u00b2"));
+  CHECK_THAT(text, !Catch::Contains("e-14"));
+  CHECK_THAT(text, !Catch::Contains("00000000"));
+  // JSON keeps every digit and says the units.
+  const nlohmann::json j = report_json(report);
+  CHECK(j["units"] == "in");
+  CHECK(j["error"]["max"]["value"].get<double>() == report.main.statistics.max.value);
+}
+
+TEST_CASE("every region and every histogram bin as CSV, numbers round-trip", "[report]") {
+  const DistanceSet part = linear_field_part();
+  PartReport report = make_part_report(part, Tolerance{-0.1, 0.5}, {});
+  report.listed_regions = 1;  // the CSV lists them all whatever the text shows
+  std::istringstream regions(regions_csv(report));
+  std::string line;
+  std::getline(regions, line);
+  const auto header = csv_fields(line);
+  CHECK(header.front() == "region");
+  std::size_t rows = 0;
+  while (std::getline(regions, line)) {
+    const auto row = csv_fields(line);
+    REQUIRE(row.size() == header.size());
+    const ErrorRegion& region = report.regions[rows];
+    CHECK(std::stoul(row[0]) == rows + 1);
+    CHECK(std::stod(row[2]) == region.area);
+    CHECK(std::stod(row[3]) == region.extreme.value);
+    ++rows;
+  }
+  CHECK(rows == report.regions.size());
+  CHECK(rows == 2);
+
+  std::istringstream histogram(histogram_csv(report));
+  std::getline(histogram, line);
+  CHECK(line == "bin,lo,hi,area,share");
+  double total = 0;
+  std::size_t bins = 0;
+  while (std::getline(histogram, line)) {
+    const auto row = csv_fields(line);
+    REQUIRE(row.size() == 5);
+    total += std::stod(row[3]);
+    if (row[0] != "below" && row[0] != "above") {
+      CHECK(std::stod(row[3]) == report.statistics.histogram.area[bins]);
+      ++bins;
+    }
+  }
+  CHECK(bins == report.statistics.histogram.bin_count());
+  CHECK(total == Approx(report.statistics.histogram.total_area));
+}
+
+TEST_CASE("the JSON report traces the inputs and the command", "[report]") {
+  const DistanceSet part = linear_field_part();
+  VerificationReport report{make_part_report(part, std::nullopt, {}), {}};
+  report.trace.date = "2026-01-02T03:04:05Z";
+  report.trace.command_line = "ncverify stats plate.dist";
+  const nlohmann::json t = report_json(report)["traceability"];
+  CHECK(t["version"] == NCV_VERSION);
+  CHECK(t["date"] == "2026-01-02T03:04:05Z");
+  CHECK(t["command_line"] == "ncverify stats plate.dist");
+  REQUIRE(t["inputs"].size() == 2);
+  CHECK(t["inputs"][0]["role"] == "workpiece");
+  CHECK(t["inputs"][0]["path"] == "parts/plate.stl");
+  CHECK(t["inputs"][0]["triangles"] == 2);
+  CHECK(t["inputs"][1]["role"] == "nominal");
+  CHECK(t["inputs"][1]["path"] == "plate_nominal.stl");
+  CHECK(t["inputs"][1]["hash"] == hash_hex(42));
 }

@@ -1,0 +1,292 @@
+#include "render/display_mesh.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "sampling/lattice_triangles.hpp"
+
+namespace ncv {
+
+namespace {
+
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
+constexpr double kLargestJump = 1.0 / 32;  // of the colour range, across one collapsed edge
+
+std::uint64_t lattice_mesh_triangles(const SampleSet& samples) {
+  std::uint64_t total = 0;
+  for (const std::uint32_t n : samples.lattice_sizes)
+    total += n >= 2 ? lattice_triangle_count(n) : 1;
+  return total;
+}
+
+bool is_corner(std::uint32_t i, std::uint32_t j, std::uint32_t n) {
+  return (i == 0 && j == 0) || (i == n - 1 && j == 0) || (i == 0 && j == n - 1);
+}
+
+// A workpiece triangle that could be shown with its whole lattice, and why.
+struct Candidate {
+  std::uint32_t triangle;
+  int tier;          // 2: holds the largest or smallest error; 1: an out-of-tolerance sample
+  double departure;  // largest |lattice value - corners' interpolation|
+  std::uint64_t cost;
+};
+
+std::vector<Candidate> telling_triangles(const DisplayMeshInput& in) {
+  const SampleSet& s = in.samples;
+  const auto [lo, hi] = std::minmax_element(in.d.begin(), in.d.end());
+  const std::uint64_t worst[2] = {static_cast<std::uint64_t>(lo - in.d.begin()),
+                                  static_cast<std::uint64_t>(hi - in.d.begin())};
+  std::vector<Candidate> candidates;
+  for (std::uint32_t t = 0; t < s.lattice_sizes.size(); ++t) {
+    const std::uint32_t n = s.lattice_sizes[t];
+    if (n < 3) continue;
+    const double a = in.d[s.sample_at(t, 0, 0)], b = in.d[s.sample_at(t, n - 1, 0)],
+                 c = in.d[s.sample_at(t, 0, n - 1)];
+    Candidate candidate{t, 0, 0, lattice_triangle_count(n) - 1};
+    for (std::uint32_t i = 0; i < n; ++i) {
+      for (std::uint32_t j = 0; i + j < n; ++j) {
+        if (is_corner(i, j, n)) continue;
+        const std::uint64_t sample = s.sample_at(t, i, j);
+        const double value = in.d[sample];
+        const double linear = a + (b - a) * i / (n - 1) + (c - a) * j / (n - 1);
+        candidate.departure = std::max(candidate.departure, std::abs(value - linear));
+        if (sample == worst[0] || sample == worst[1]) candidate.tier = 2;
+        if (in.tolerance && classify(value, *in.tolerance) != ToleranceClass::within) {
+          candidate.tier = std::max(candidate.tier, 1);
+        }
+      }
+    }
+    if (candidate.tier > 0 || candidate.departure > 0) candidates.push_back(candidate);
+  }
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
+    if (x.tier != y.tier) return x.tier > y.tier;
+    if (x.departure != y.departure) return x.departure > y.departure;
+    return x.triangle < y.triangle;
+  });
+  return candidates;
+}
+
+// Builds an ErrorMesh from samples, each used sample one vertex.
+class SampleMeshBuilder {
+ public:
+  explicit SampleMeshBuilder(const DisplayMeshInput& in)
+      : in_(in),
+        vertex_of_sample_(in.samples.sample_count(), kNone),
+        vertex_of_corner_(in.samples.mesh.vertex_count(), kNone) {}
+
+  void add_lattice(std::size_t t) {
+    for_each_lattice_triangle(
+        in_.samples, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+          out_.mesh.triangles.push_back({sample_vertex(a), sample_vertex(b), sample_vertex(c)});
+        });
+  }
+
+  void add_corners(std::size_t t) {
+    const Triangle& corners = in_.samples.mesh.triangles[t];
+    out_.mesh.triangles.push_back(
+        {corner_vertex(corners[0]), corner_vertex(corners[1]), corner_vertex(corners[2])});
+  }
+
+  ErrorMesh take() { return std::move(out_); }
+
+ private:
+  std::uint32_t add_vertex(Vec3 p, double value, std::uint32_t region) {
+    out_.mesh.vertices.push_back(p);
+    out_.values.push_back(value);
+    out_.regions.push_back(region);
+    return static_cast<std::uint32_t>(out_.mesh.vertices.size() - 1);
+  }
+
+  std::uint32_t sample_vertex(std::uint64_t s) {
+    std::uint32_t& v = vertex_of_sample_[s];
+    if (v == kNone) {
+      v = add_vertex(in_.samples.positions[s], in_.d[s],
+                     in_.sample_region.empty() ? kNoRegion : in_.sample_region[s]);
+    }
+    return v;
+  }
+
+  // A mesh vertex: its sample, or (scheme II) a vertex without a value.
+  std::uint32_t corner_vertex(std::uint32_t v) {
+    if (in_.samples.vertex_sample[v] != kNoSample)
+      return sample_vertex(in_.samples.vertex_sample[v]);
+    std::uint32_t& vertex = vertex_of_corner_[v];
+    if (vertex == kNone) vertex = add_vertex(in_.samples.mesh.vertices[v], kNoValue, kNoRegion);
+    return vertex;
+  }
+
+  const DisplayMeshInput& in_;
+  ErrorMesh out_;
+  std::vector<std::uint32_t> vertex_of_sample_;
+  std::vector<std::uint32_t> vertex_of_corner_;
+};
+
+// --- A workpiece larger than the budget: vertex clustering with the features kept -------
+
+int value_class(double value, const std::optional<Tolerance>& tolerance) {
+  if (std::isnan(value)) return 3;
+  return tolerance ? static_cast<int>(classify(value, *tolerance)) : 0;
+}
+
+// The vertices that stand for the others: one per grid cell, tolerance class and band of
+// values (kLargestJump of the colour range); a vertex of a region or of a worst point
+// stands for itself alone. The first vertex of each group (in index order) represents it,
+// so the result does not depend on anything but the input.
+class VertexClusters {
+ public:
+  VertexClusters(const ErrorMesh& coarse, const DisplayMeshInput& in)
+      : coarse_(coarse), in_(in), box_(bounding_box(coarse.mesh)) {
+    const auto [lo, hi] = std::minmax_element(in.d.begin(), in.d.end());
+    worst_ = {*lo, *hi};
+    band_ = kLargestJump * (in.color_range.hi - in.color_range.lo);
+  }
+
+  // Each vertex's representative for cells of edge `cell`.
+  std::vector<std::uint32_t> representatives(double cell) const {
+    std::unordered_map<std::uint64_t, std::uint32_t> first;
+    first.reserve(coarse_.mesh.vertex_count());
+    std::vector<std::uint32_t> rep(coarse_.mesh.vertex_count());
+    for (std::uint32_t v = 0; v < rep.size(); ++v) {
+      rep[v] = first.try_emplace(key(v, cell), v).first->second;
+    }
+    return rep;
+  }
+
+ private:
+  std::uint64_t key(std::uint32_t v, double cell) const {
+    const double value = coarse_.values[v];
+    if (coarse_.regions[v] != kNoRegion || value == worst_[0] || value == worst_[1]) {
+      return std::uint64_t{1} << 63 | v;
+    }
+    std::uint64_t key = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      const double offset = (coarse_.mesh.vertices[v][axis] - box_.min[axis]) / cell;
+      key = key << 16 | (static_cast<std::uint64_t>(offset) & 0xffff);
+    }
+    const double band =
+        band_ > 0 && !std::isnan(value) ? std::floor((value - in_.color_range.lo) / band_) : 0.0;
+    key = key << 2 | static_cast<std::uint64_t>(value_class(value, in_.tolerance));
+    return key << 8 | (static_cast<std::uint64_t>(std::clamp(band, 0.0, 255.0)) & 0xff);
+  }
+
+  const ErrorMesh& coarse_;
+  const DisplayMeshInput& in_;
+  BoundingBox box_;
+  std::array<double, 2> worst_{};
+  double band_ = 0;
+};
+
+// The triangles that survive the clustering, on the representatives' vertices.
+std::vector<Triangle> clustered_triangles(const Mesh& mesh, const std::vector<std::uint32_t>& rep) {
+  std::vector<Triangle> triangles;
+  for (const Triangle& t : mesh.triangles) {
+    const Triangle r{rep[t[0]], rep[t[1]], rep[t[2]]};
+    if (r[0] != r[1] && r[1] != r[2] && r[2] != r[0]) triangles.push_back(r);
+  }
+  return triangles;
+}
+
+// Cells grow from the size that would give about `budget` triangles on an even surface
+// until the budget is met (or the cells span the part: what is left is features).
+ErrorMesh clustered(const ErrorMesh& coarse, const DisplayMeshInput& in, std::uint64_t budget) {
+  const VertexClusters clusters(coarse, in);
+  const double diagonal = bounding_box(coarse.mesh).diagonal();
+  double cell = std::max(std::sqrt(2 * surface_area(coarse.mesh) / static_cast<double>(budget)),
+                         diagonal / 60000);
+  std::vector<std::uint32_t> rep = clusters.representatives(cell);
+  std::vector<Triangle> triangles = clustered_triangles(coarse.mesh, rep);
+  while (triangles.size() > budget && cell < diagonal) {
+    cell *= 1.25;
+    rep = clusters.representatives(cell);
+    triangles = clustered_triangles(coarse.mesh, rep);
+  }
+  ErrorMesh out;
+  std::vector<std::uint32_t> renumbered(coarse.mesh.vertex_count(), kNone);
+  for (Triangle& t : triangles) {
+    for (std::uint32_t& v : t) {
+      if (renumbered[v] == kNone) {
+        renumbered[v] = static_cast<std::uint32_t>(out.mesh.vertices.size());
+        out.mesh.vertices.push_back(coarse.mesh.vertices[v]);
+        out.values.push_back(coarse.values[v]);
+        out.regions.push_back(coarse.regions[v]);
+      }
+      v = renumbered[v];
+    }
+  }
+  out.mesh.triangles = std::move(triangles);
+  return out;
+}
+
+}  // namespace
+
+DisplayMesh make_display_mesh(const DisplayMeshInput& in, std::uint64_t budget) {
+  const SampleSet& s = in.samples;
+  DisplayMesh display;
+  display.budget = budget;
+  display.lattice_triangles = lattice_mesh_triangles(s);
+  if (display.lattice_triangles <= budget) {
+    display.mesh = lattice_error_mesh(s, in.d, in.sample_region);
+    display.detail = DisplayDetail::every_sample;
+    return display;
+  }
+  const std::uint64_t triangles = s.mesh.triangle_count();
+  if (triangles > budget) {
+    display.mesh = clustered(workpiece_error_mesh(s, in.d, in.sample_region), in, budget);
+    display.detail = DisplayDetail::clustered;
+    return display;
+  }
+  std::vector<bool> refined(triangles, false);
+  std::uint64_t used = triangles;
+  for (const Candidate& c : telling_triangles(in)) {
+    if (used + c.cost > budget) continue;
+    used += c.cost;
+    refined[c.triangle] = true;
+    ++display.refined_triangles;
+  }
+  SampleMeshBuilder builder(in);
+  for (std::size_t t = 0; t < triangles; ++t) {
+    if (refined[t]) {
+      builder.add_lattice(t);
+    } else {
+      builder.add_corners(t);
+    }
+  }
+  display.mesh = builder.take();
+  display.detail = DisplayDetail::refined;
+  return display;
+}
+
+std::string describe(const DisplayMesh& display) {
+  const std::uint64_t shown = display.mesh.mesh.triangle_count();
+  switch (display.detail) {
+    case DisplayDetail::every_sample:
+      return fmt::format("The view shows every sample: the sampling lattice's {} triangles.",
+                         shown);
+    case DisplayDetail::refined:
+      return fmt::format(
+          "The whole lattice ({} triangles) exceeds the view's budget of {} triangles: the "
+          "view shows the workpiece's triangles at their corner samples, {} of them with "
+          "their whole lattice (those holding the largest and smallest error, the "
+          "out-of-tolerance samples and the strongest variation), {} triangles in all. "
+          "Markers show the worst points and every region.",
+          display.lattice_triangles, display.budget, display.refined_triangles, shown);
+    case DisplayDetail::clustered:
+      return fmt::format(
+          "The workpiece exceeds the view's budget of {} triangles: the view shows it "
+          "simplified to {} triangles (vertices merged within small cells, never across a "
+          "tolerance limit or a jump of the error), every out-of-tolerance region and the "
+          "worst points at full resolution; every vertex shows its own sample's value. "
+          "Markers show the worst points and every region.",
+          display.budget, shown);
+  }
+  return {};
+}
+
+}  // namespace ncv
