@@ -10,6 +10,7 @@ packages=(
   libopenmesh-dev libcli11-dev libspdlog-dev libfmt-dev catch2 libtbb-dev
   nlohmann-json3-dev libxxhash-dev libbenchmark-dev
   clang lld libclang-rt-14-dev clang-format python3 python3-numpy time
+  slurm-wlm munge parallel
 )
 
 missing=()
