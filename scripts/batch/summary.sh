@@ -43,9 +43,13 @@ up_to_date() {
 # The first step of the part's chain that failed, as "STEP: its last message line".
 failed_step() {
   name=$1 grid=$(basename "$2" .stl).grid
-  for made in "$name.samples" "$grid" "$name.dist" "$name.csv"; do
+  for made in "$name.samples" "$grid" "$name.dist" "$name.reverse.samples" \
+    "$name.reverse.grid" "$name.reverse.dist" "$name.csv"; do
     [ -s "$out/errors/$made" ] || continue
     case $made in
+      *.reverse.samples) step="reverse sample" ;;
+      *.reverse.grid) step="reverse grid-build" ;;
+      *.reverse.dist) step="reverse distance" ;;
       *.samples) step=sample ;;
       *.grid) step=grid-build ;;
       *.dist) step=distance ;;
