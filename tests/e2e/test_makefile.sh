@@ -100,6 +100,9 @@ redone "back to SIDES=two redoes stats, and the nominals' PLYs of the old TOL" r
   --step 2% --cell 3 --sign winding --bins 16 --tol 0.6 --format csv >run-slot.csv
 check "the batch's row is run's" test "$(grep '^"slot_uncut"' out/summary.csv)" = \
   "$(tail -n 1 run-slot.csv),"
+step_of() { "$NCVERIFY" inspect "$1" --json | python3 -c 'import json, sys; print(json.load(sys.stdin)["meta"]["sampling"]["step"])'; }
+check "the nominal is sampled at its workpiece's absolute step (sample --step-from)" \
+  test "$(step_of out/core_finishing.reverse.samples)" = "$(step_of out/core_finishing.samples)"
 batch TOL=0.6 "${settings[@]:1}" SIDES=both >sides.log 2>&1
 check "SIDES other than one or two is refused (exit 2), in one line" \
   test "$? $(wc -l <sides.log)" = "2 1" -a -n "$(grep 'SIDES=both' sides.log)"
