@@ -83,7 +83,11 @@ munged --socket="$cluster/munge.socket" --key-file="$cluster/munge.key" \
 remember_pid "$cluster/munged.pid" || skip "munged wrote no pid file"
 
 node=$(hostname -s)
-controller_port=$(free_port) && node_port=$(free_port) || skip "no free TCP port found"
+controller_port=$(free_port) || skip "no free TCP port found"
+node_port=$controller_port
+while [ "$node_port" = "$controller_port" ]; do
+  node_port=$(free_port) || skip "no free TCP port found"
+done
 touch "$cluster/plugstack.conf"
 cat >"$cluster/slurm.conf" <<EOF
 ClusterName=ncverify-test
