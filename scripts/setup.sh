@@ -13,6 +13,7 @@ packages=(
   nlohmann-json3-dev libxxhash-dev libbenchmark-dev
   clang lld libclang-rt-14-dev clang-format python3 python3-numpy time
   chromium
+  slurm-wlm munge parallel
 )
 # Node.js and npm from Debian, unless some node is installed already (its npm comes with it).
 command -v node >/dev/null && command -v npm >/dev/null || packages+=(nodejs npm)

@@ -61,9 +61,10 @@ SampleOptions sampling_like(const std::string& samples_path, bool force) {
 // The output is opened first, so an unwritable destination fails before any work; the
 // report follows the commit, so a failure is the only line on stderr.
 void run_sample(const SampleJob& job) {
+  const SampleOptions options =
+      job.step_from.empty() ? job.options : sampling_like(job.step_from, job.options.force);
   OutputFile out(job.output, OutputKind::binary);
-  const SampledSurface sampled =
-      sample_surface(read_mesh(job.mesh), input_name(job.mesh), job.options);
+  const SampledSurface sampled = sample_surface(read_mesh(job.mesh), input_name(job.mesh), options);
   write_samples_file(sampled.samples, out);
   out.commit();
   log_sampling(sampled);
