@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# The library for OpenMesh users: the package installed into a fresh prefix, the example
+# program built against it alone in a fresh folder, and its results on bundled parts equal to
+# `ncverify run`'s: the JSON report byte for byte (every number to the bit), the exit status,
+# and the coloured workpiece's colours and errors vertex for vertex.
+. "$(dirname "$0")/lib.sh"
+cd "$WORK"
+PARTS="$NCV_SOURCE_DIR/samples/parts"
+
+cmake --install "$NCV_BUILD_DIR" --prefix "$WORK/prefix" >install.log 2>&1
+check "the package installs" test -f prefix/include/ncverify/verify.hpp \
+  -a -f prefix/lib/cmake/ncverify/ncverifyConfig.cmake -a -f prefix/bin/ncverify
+
+generator=()
+[ -n "${NCV_CMAKE_GENERATOR:-}" ] && generator=(-G "$NCV_CMAKE_GENERATOR")
+compiler=()
+[ -n "${NCV_CXX_COMPILER:-}" ] && compiler=(-DCMAKE_CXX_COMPILER="$NCV_CXX_COMPILER")
+cp -r "$NCV_SOURCE_DIR/examples" example-src
+cmake -S example-src -B example-build "${generator[@]}" "${compiler[@]}" \
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$WORK/prefix" \
+  -DCMAKE_EXPORT_COMPILE_COMMANDS=ON >configure.log 2>&1
+check "the example configures against the installed package ($(tail -c 300 configure.log))" \
+  grep -q "Build files have been written" configure.log
+cmake --build example-build >build.log 2>&1
+check "the example builds ($(tail -c 300 build.log))" test -x example-build/verify_openmesh
+check "with the installed headers" grep -qE -- "-(I|isystem) ?$WORK/prefix/include" \
+  example-build/compile_commands.json
+check "and none from the source tree" test "$(grep -c -- "$NCV_SOURCE_DIR" \
+  example-build/compile_commands.json)" -eq 0
+example=$WORK/example-build/verify_openmesh
+
+# ply_vertices FILE: each vertex's colour and signed error, from the PLY the command writes
+# (float x y z, uchar rgb, float quality, float scalar) or the one OpenMesh writes for the
+# example (float x y z, uchar rgb, double signed_error), as "r g b error(float)" lines.
+ply_vertices() {
+  /usr/bin/python3 - "$1" <<'PY'
+import struct, sys
+data = open(sys.argv[1], 'rb').read()
+end = data.index(b'end_header\n') + len(b'end_header\n')
+header = data[:end].decode().split('\n')
+count = next(int(l.split()[2]) for l in header if l.startswith('element vertex'))
+props = [l.split()[1:] for l in header if l.startswith('property ') and 'list' not in l]
+layout = {'float': 'f', 'double': 'd', 'uchar': 'B'}
+fmt = '<' + ''.join(layout[kind] for kind, _ in props)
+size = struct.calcsize(fmt)
+names = [name for _, name in props]
+for k in range(count):
+    v = dict(zip(names, struct.unpack_from(fmt, data, end + k * size)))
+    error = v.get('signed_error', v.get('quality'))
+    print(v['red'], v['green'], v['blue'], repr(struct.unpack('<f', struct.pack('<f', error))[0]))
+PY
+}
+
+# same_as_run PART NOMINAL TOLERANCE STATUS: the example and `run` on one part.
+same_as_run() {
+  local part=$1 nominal=$2 tolerance=$3 status=$4
+  mkdir -p "$part" && cd "$part"
+  cp "$PARTS/$part.stl" "$PARTS/$nominal.stl" .
+  "$NCVERIFY" -q run "$part.stl" "$nominal.stl" --tol "$tolerance" --format json -d run >run.json
+  local run_status=$?
+  "$example" "$part.stl" "$nominal.stl" "$tolerance" colored.ply >example.json 2>example.err
+  local example_status=$?
+  check "$part: run exits $status" test "$run_status" -eq "$status"
+  check "$part: the example exits as run does ($(head -c 300 example.err))" \
+    test "$example_status" -eq "$run_status"
+  check "$part: the report is run's, byte for byte" cmp -s run.json example.json
+  check "$part: and holds the statistics" /usr/bin/python3 -c "
+import json, math; r = json.load(open('example.json'))
+assert r['sampling']['samples'] > 0 and r['tolerance']['verdict'] in ('pass', 'fail')
+assert all(math.isfinite(r['error'][k]['value']) for k in ('max', 'min', 'max_abs'))
+assert math.isfinite(r['error']['mean']) and math.isfinite(r['error']['rms'])"
+  ply_vertices "run/$part.ply" >run.vertices
+  ply_vertices colored.ply >example.vertices
+  check "$part: the coloured TriMesh has run's colours and errors at every vertex" \
+    cmp -s run.vertices example.vertices
+  check "$part: on every vertex of the workpiece (manifest.json)" test "$(wc -l <example.vertices)" \
+    -eq "$(/usr/bin/python3 -c "import json; print(next(p['vertices'] for p in json.load(open(
+      '$PARTS/manifest.json'))['parts'] if p['file'] == '$part.stl'))")"
+  check "$part: the worst vertex is named" grep -q "worst vertex" example.err
+  cd "$WORK"
+}
+
+same_as_run core_finishing core_nominal -0.05:0.1 1
+same_as_run box_scallop box_nominal 0.1 0
+
+expect_status 2 "an unreadable mesh is refused" "$example" missing.stl "$PARTS/box_nominal.stl" 0.1 x.ply
+finish
