@@ -1,8 +1,17 @@
 #include "runners/mesh_verification.hpp"
 
 #include "render/colored_tri_mesh.hpp"
+#include "util/error.hpp"
 
 namespace ncv {
+namespace {
+
+TriMesh colored(const DistanceSet& distances, const ColorizeOptions& options) {
+  const ColoredSurface surface = colorize(distances, options);
+  return colored_tri_mesh(surface.mesh, surface.map);
+}
+
+}  // namespace
 
 Verification verify(const TriMesh& workpiece, const TriMesh& nominal, const VerifyOptions& options,
                     const MeshNames& names) {
@@ -10,23 +19,28 @@ Verification verify(const TriMesh& workpiece, const TriMesh& nominal, const Veri
   Mesh nominal_arrays = mesh_arrays(nominal, names.nominal);
   refuse_if_apart(bounding_box(workpiece_arrays), names.workpiece, bounding_box(nominal_arrays),
                   names.nominal);
-  SampledSurface sampled =
-      sample_surface(std::move(workpiece_arrays), names.workpiece, options.sampling);
-  const IndexedSurface indexed =
-      index_surface(std::move(nominal_arrays), names.nominal, options.grid);
-
+  Measurements measured = measure_part(std::move(workpiece_arrays), names.workpiece,
+                                       std::move(nominal_arrays), names.nominal, options);
   Verification verification;
-  verification.forward = std::make_unique<const DistanceSet>(
-      measure_distances(std::move(sampled.samples), indexed.reference, options.distance));
-  verification.report = make_report(*verification.forward, options.report);
-  verification.colorize = options.colorize;
-  verification.colorize.tolerance = options.report.tolerance;
+  verification.forward = std::make_unique<const DistanceSet>(std::move(measured.forward));
+  if (measured.reverse) {
+    verification.reverse = std::make_unique<const DistanceSet>(std::move(*measured.reverse));
+  }
+  verification.report = make_verification_report(*verification.forward,
+                                                 verification.reverse.get(), options.report);
+  verification.colorize = colorize_options(options);
   return verification;
 }
 
 TriMesh colored_workpiece(const Verification& verification) {
-  const ColoredSurface colored = colorize(*verification.forward, verification.colorize);
-  return colored_tri_mesh(colored.mesh, colored.map);
+  return colored(*verification.forward, verification.colorize);
+}
+
+TriMesh colored_nominal(const Verification& verification) {
+  if (!verification.reverse) {
+    throw UsageError("the nominal is coloured by the reverse direction: verify two-sided");
+  }
+  return colored(*verification.reverse, verification.colorize);
 }
 
 }  // namespace ncv

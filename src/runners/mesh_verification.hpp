@@ -1,6 +1,6 @@
 // Verification in process, the library's entry (include/ncverify/verify.hpp): a workpiece
-// and a nominal OpenMesh TriMesh through the steps of `ncverify run` (sample, grid,
-// distance, report), with run's options and run's results to the bit, and nothing written.
+// and a nominal OpenMesh TriMesh through the steps of `ncverify run` (measure_part, then the
+// report), with run's options and run's results to the bit, and nothing written.
 #pragma once
 
 #include <memory>
@@ -18,13 +18,16 @@ struct MeshNames {
   std::string nominal = "nominal";
 };
 
+// The directions' results are held by pointer, so that `report`, which points into them,
+// stays valid when the Verification moves.
 struct Verification {
   // Per sample of the workpiece: its position, triangle and lattice point, signed error,
-  // closest nominal point and face. Held by pointer, so that `report`, which points into
-  // it, stays valid when the Verification moves.
+  // closest nominal point and face.
   std::unique_ptr<const DistanceSet> forward;
-  PartReport report;         // the statistics, the verdict and the out-of-tolerance regions
-  ColorizeOptions colorize;  // how run paints the workpiece: its options, the report's zone
+  // The same per sample of the nominal, measured against the workpiece; null one-sided.
+  std::unique_ptr<const DistanceSet> reverse;
+  VerificationReport report;  // statistics, verdict and out-of-tolerance regions of each
+  ColorizeOptions colorize;   // how run paints: its colour options, the report's zone
 };
 
 // Throws InputError (naming the mesh) for a mesh a file reader would refuse or with deleted
@@ -33,8 +36,11 @@ struct Verification {
 Verification verify(const TriMesh& workpiece, const TriMesh& nominal,
                     const VerifyOptions& options = {}, const MeshNames& names = {});
 
-// The workpiece as run's PLY paints it (colorize_runner.hpp), with per-vertex colours and
-// the signed error as the vertex property kSignedErrorProperty (render/colored_tri_mesh.hpp).
+// The workpiece, or (two-sided) the nominal, as run's PLYs paint them
+// (colorize_runner.hpp): per-vertex colours and the signed error as the vertex property
+// kSignedErrorProperty (render/colored_tri_mesh.hpp). colored_nominal throws UsageError for
+// a one-sided verification.
 TriMesh colored_workpiece(const Verification& verification);
+TriMesh colored_nominal(const Verification& verification);
 
 }  // namespace ncv

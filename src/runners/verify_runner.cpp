@@ -50,47 +50,66 @@ struct DirectionFiles {
   fs::path samples, grid, distances;
 };
 
+std::string phase_name(Direction direction, const std::string& step) {
+  return direction == Direction::forward ? step : "reverse " + step;
+}
+
+// run's hooks: each step logged, timed and its file written as soon as it is done; `files`
+// by direction, forward first.
+StepHooks logging_and_writing(const DirectionFiles (&files)[2], PhaseLog& phases) {
+  const auto in = [&](Direction direction) -> const DirectionFiles& {
+    return files[static_cast<int>(direction)];
+  };
+  StepHooks hooks;
+  hooks.sampled = [&phases, in](const SampledSurface& sampled, Direction direction) {
+    log_sampling(sampled);
+    phases.done(phase_name(direction, "sample"));
+    phases.time("write", [&] {
+      write_file(in(direction).samples, OutputKind::binary,
+                 [&](OutputFile& out) { write_samples_file(sampled.samples, out); });
+    });
+  };
+  hooks.indexed = [&phases, in](const IndexedSurface& indexed, Direction direction) {
+    log_grid(indexed);
+    phases.done(phase_name(direction, "grid-build"));
+    phases.time("write", [&] {
+      write_file(in(direction).grid, OutputKind::binary, [&](OutputFile& out) {
+        write_grid_file(indexed.reference, indexed.statistics, out);
+      });
+    });
+  };
+  hooks.measured = [&phases, in](const DistanceSet& distances, double seconds) {
+    log_distances(distances, seconds);
+    phases.done(phase_name(distances.direction, "distance"));
+    phases.time("write", [&] {
+      write_file(in(distances.direction).distances, OutputKind::binary,
+                 [&](OutputFile& out) { write_distance_file(distances, out); });
+    });
+  };
+  return hooks;
+}
+
 // A mesh the caller still needs later is copied, else moved.
 Mesh take(Mesh& mesh, bool needed_later) {
   return needed_later ? mesh : std::move(mesh);
 }
 
-// One direction's steps: sample, index the reference, measure; each file written as it is
-// made.
+// One direction's steps: sample, index the reference, measure.
 DistanceSet measure_direction(Mesh sampled_mesh, const std::string& sampled_source,
                               Mesh reference_mesh, const std::string& reference_source,
                               const SampleOptions& sampling, const VerifyOptions& options,
-                              Direction direction, const DirectionFiles& files, PhaseLog& phases) {
-  const std::string prefix = direction == Direction::forward ? "" : "reverse ";
+                              Direction direction, const StepHooks& hooks) {
   SampledSurface sampled = sample_surface(std::move(sampled_mesh), sampled_source, sampling);
-  log_sampling(sampled);
-  phases.done(prefix + "sample");
-  phases.time("write", [&] {
-    write_file(files.samples, OutputKind::binary,
-               [&](OutputFile& out) { write_samples_file(sampled.samples, out); });
-  });
-
+  if (hooks.sampled) hooks.sampled(sampled, direction);
   const IndexedSurface indexed =
       index_surface(std::move(reference_mesh), reference_source, options.grid);
-  log_grid(indexed);
-  phases.done(prefix + "grid-build");
-  phases.time("write", [&] {
-    write_file(files.grid, OutputKind::binary, [&](OutputFile& out) {
-      write_grid_file(indexed.reference, indexed.statistics, out);
-    });
-  });
-
+  if (hooks.indexed) hooks.indexed(indexed, direction);
   DistanceOptions distance = options.distance;
   distance.direction = direction;
   double seconds = 0;
   DistanceSet distances =
       measure_distances(std::move(sampled.samples), indexed.reference, distance, &seconds);
-  log_distances(distances, seconds);
-  phases.done(prefix + "distance");
-  phases.time("write", [&] {
-    write_file(files.distances, OutputKind::binary,
-               [&](OutputFile& out) { write_distance_file(distances, out); });
-  });
+  if (hooks.measured) hooks.measured(distances, seconds);
   return distances;
 }
 
@@ -104,6 +123,28 @@ SampleOptions reverse_sampling(const SampleSet& forward, const SampleOptions& op
 }
 
 }  // namespace
+
+Measurements measure_part(Mesh workpiece, const std::string& workpiece_source, Mesh nominal,
+                          const std::string& nominal_source, const VerifyOptions& options,
+                          const StepHooks& hooks) {
+  Measurements measured;
+  measured.forward = measure_direction(take(workpiece, options.two_sided), workpiece_source,
+                                       take(nominal, options.two_sided), nominal_source,
+                                       options.sampling, options, Direction::forward, hooks);
+  if (options.two_sided) {
+    measured.reverse = measure_direction(
+        std::move(nominal), nominal_source, std::move(workpiece), workpiece_source,
+        reverse_sampling(measured.forward.samples, options.sampling), options, Direction::reverse,
+        hooks);
+  }
+  return measured;
+}
+
+ColorizeOptions colorize_options(const VerifyOptions& options) {
+  ColorizeOptions colorize = options.colorize;
+  colorize.tolerance = options.report.tolerance;
+  return colorize;
+}
 
 int run_verification(const RunJob& job) {
   const std::string part = stem(job.workpiece);
@@ -119,21 +160,16 @@ int run_verification(const RunJob& job) {
   phases.done("read");
 
   // The nominal's grid file keeps the nominal's name, as grid-build names it.
-  const DistanceSet forward = measure_direction(
-      take(workpiece, options.two_sided), workpiece_source, take(nominal, options.two_sided),
-      nominal_source, options.sampling, options, Direction::forward,
+  const DirectionFiles files[] = {
       {folder / (part + ".samples"), folder / (stem(job.nominal) + ".grid"),
        folder / (part + ".dist")},
-      phases);
-  std::optional<DistanceSet> reverse;
-  if (options.two_sided) {
-    reverse = measure_direction(
-        std::move(nominal), nominal_source, std::move(workpiece), workpiece_source,
-        reverse_sampling(forward.samples, options.sampling), options, Direction::reverse,
-        {folder / (part + ".reverse.samples"), folder / (part + ".reverse.grid"),
-         folder / (part + ".reverse.dist")},
-        phases);
-  }
+      {folder / (part + ".reverse.samples"), folder / (part + ".reverse.grid"),
+       folder / (part + ".reverse.dist")}};
+  const StepHooks hooks = logging_and_writing(files, phases);
+  const Measurements measured = measure_part(std::move(workpiece), workpiece_source,
+                                             std::move(nominal), nominal_source, options, hooks);
+  const DistanceSet& forward = measured.forward;
+  const std::optional<DistanceSet>& reverse = measured.reverse;
 
   const VerificationReport report =
       make_verification_report(forward, reverse ? &*reverse : nullptr, options.report);
@@ -149,8 +185,7 @@ int run_verification(const RunJob& job) {
   }
   phases.done("stats");
 
-  ColorizeOptions colorize = options.colorize;
-  colorize.tolerance = options.report.tolerance;
+  const ColorizeOptions colorize = colorize_options(options);
   write_colored(forward, colorize, (folder / (part + ".ply")).string(),
                 in_folder(job.legend_svg, folder / (part + ".legend.svg")).string());
   if (reverse) {
