@@ -1,6 +1,12 @@
 #include "mesh/mesh.hpp"
 
+#include <fmt/format.h>
 #include <xxhash.h>
+
+#include <limits>
+
+#include "geometry/coordinate_limit.hpp"
+#include "util/error.hpp"
 
 namespace ncv {
 
@@ -31,6 +37,22 @@ std::uint64_t mesh_hash(const Mesh& mesh) {
   const std::uint64_t hash = XXH3_64bits_digest(state);
   XXH3_freeState(state);
   return hash;
+}
+
+void check_mesh(const Mesh& mesh, const std::string& source) {
+  if (mesh.triangles.empty()) throw InputError(source, "the mesh has no triangles");
+  for (const Vec3& p : mesh.vertices) {
+    if (!is_finite(p)) throw InputError(source, "a vertex has a NaN or infinite coordinate");
+    // The bound the distance step holds nominal and query points to (squares of such
+    // coordinates would overflow); a workpiece beyond it used to get as far as a sampling
+    // step of "inf".
+    if (max_abs(p) > kMaxCoordinate) {
+      throw InputError(source, fmt::format("a vertex lies beyond {}", kMaxCoordinate));
+    }
+  }
+  if (mesh.triangles.size() > std::numeric_limits<std::uint32_t>::max() / 2) {
+    throw InputError(source, "too many triangles (more than 2^31)");
+  }
 }
 
 }  // namespace ncv

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "geometry/bounding_box.hpp"
@@ -29,5 +30,9 @@ double surface_area(const Mesh& mesh);
 BoundingBox bounding_box(const Mesh& mesh);
 // Content hash of the geometry (vertex coordinates and triangle indices), XXH3-64.
 std::uint64_t mesh_hash(const Mesh& mesh);
+// What every mesh ncverify measures holds, whether read from a file or handed over in
+// memory: at least one triangle, fewer than 2^31, every vertex finite and within
+// kMaxCoordinate. Throws InputError naming `source` otherwise.
+void check_mesh(const Mesh& mesh, const std::string& source);
 
 }  // namespace ncv

@@ -10,7 +10,6 @@
 #include <cstring>
 #include <string_view>
 
-#include "geometry/coordinate_limit.hpp"
 #include "mesh/polygon_reader.hpp"
 #include "mesh/stl_reader.hpp"
 #include "util/error.hpp"
@@ -94,22 +93,6 @@ Mesh parse_by_content(std::span<const char> bytes, const std::string& source,
     return parse_binary_stl(bytes, source);  // reports the size mismatch precisely
   }
   throw InputError(source, "not a mesh file: not recognised as STL, PLY, OBJ or OFF");
-}
-
-void check_mesh(const Mesh& mesh, const std::string& source) {
-  if (mesh.triangles.empty()) throw InputError(source, "the mesh has no triangles");
-  for (const Vec3& p : mesh.vertices) {
-    if (!is_finite(p)) throw InputError(source, "a vertex has a NaN or infinite coordinate");
-    // The bound the distance step holds nominal and query points to (squares of such
-    // coordinates would overflow); a workpiece beyond it used to get as far as a sampling
-    // step of "inf".
-    if (max_abs(p) > kMaxCoordinate) {
-      throw InputError(source, fmt::format("a vertex lies beyond {}", kMaxCoordinate));
-    }
-  }
-  if (mesh.triangles.size() > std::numeric_limits<std::uint32_t>::max() / 2) {
-    throw InputError(source, "too many triangles (more than 2^31)");
-  }
 }
 
 }  // namespace

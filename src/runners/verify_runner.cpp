@@ -2,7 +2,9 @@
 
 #include <spdlog/spdlog.h>
 
+#include <array>
 #include <filesystem>
+#include <memory>
 
 #include "files/distance_file.hpp"
 #include "files/grid_file.hpp"
@@ -50,58 +52,82 @@ struct DirectionFiles {
   fs::path samples, grid, distances;
 };
 
+std::string phase_name(Direction direction, const std::string& step) {
+  return direction == Direction::forward ? step : "reverse " + step;
+}
+
+// run's hooks: each step logged and timed, and with `files` (by direction, forward first)
+// its intermediate file written as soon as it is done; each distance file names the samples
+// file written before it.
+StepHooks logging_and_writing(const std::optional<std::array<DirectionFiles, 2>>& files,
+                              PhaseLog& phases) {
+  struct Written {
+    std::uint64_t samples_hash[2] = {0, 0};
+  };
+  auto written = std::make_shared<Written>();
+  const auto in = [files](Direction direction) -> const DirectionFiles& {
+    return (*files)[static_cast<std::size_t>(direction)];
+  };
+  StepHooks hooks;
+  hooks.sampled = [&phases, in, files, written](const SampledSurface& sampled,
+                                                Direction direction) {
+    log_sampling(sampled);
+    phases.done(phase_name(direction, "sample"));
+    if (!files) return;
+    phases.time("write", [&] {
+      write_file(in(direction).samples, OutputKind::binary, [&](OutputFile& out) {
+        written->samples_hash[static_cast<std::size_t>(direction)] =
+            write_samples_file(sampled.samples, out);
+      });
+    });
+  };
+  hooks.indexed = [&phases, in, files](const IndexedSurface& indexed, Direction direction) {
+    log_grid(indexed);
+    phases.done(phase_name(direction, "grid-build"));
+    if (!files) return;
+    phases.time("write", [&] {
+      write_file(in(direction).grid, OutputKind::binary, [&](OutputFile& out) {
+        write_grid_file(indexed.reference, indexed.statistics, out);
+      });
+    });
+  };
+  hooks.measured = [&phases, in, files, written](const DistanceSet& distances, double seconds) {
+    log_distances(distances, seconds);
+    phases.done(phase_name(distances.direction, "distance"));
+    if (!files) return;
+    const DirectionFiles& to = in(distances.direction);
+    const std::uint64_t hash = written->samples_hash[static_cast<std::size_t>(distances.direction)];
+    phases.time("write", [&] {
+      write_file(to.distances, OutputKind::binary, [&](OutputFile& out) {
+        write_distance_file(distances,
+                            link_samples(to.samples.string(), hash, to.distances.string()), out);
+      });
+    });
+  };
+  return hooks;
+}
+
 // A mesh the caller still needs later is copied, else moved.
 Mesh take(Mesh& mesh, bool needed_later) {
   return needed_later ? mesh : std::move(mesh);
 }
 
-// One direction's steps: sample, index the reference, measure; each intermediate file
-// written as it is made when `files` says where.
+// One direction's steps: sample, index the reference, measure.
 DistanceSet measure_direction(Mesh sampled_mesh, const std::string& sampled_source,
                               Mesh reference_mesh, const std::string& reference_source,
                               const SampleOptions& sampling, const VerifyOptions& options,
-                              Direction direction, const std::optional<DirectionFiles>& files,
-                              PhaseLog& phases) {
-  const std::string prefix = direction == Direction::forward ? "" : "reverse ";
+                              Direction direction, const StepHooks& hooks) {
   SampledSurface sampled = sample_surface(std::move(sampled_mesh), sampled_source, sampling);
-  log_sampling(sampled);
-  phases.done(prefix + "sample");
-  std::uint64_t samples_hash = 0;
-  if (files) {
-    phases.time("write", [&] {
-      write_file(files->samples, OutputKind::binary,
-                 [&](OutputFile& out) { samples_hash = write_samples_file(sampled.samples, out); });
-    });
-  }
-
+  if (hooks.sampled) hooks.sampled(sampled, direction);
   const IndexedSurface indexed =
       index_surface(std::move(reference_mesh), reference_source, options.grid);
-  log_grid(indexed);
-  phases.done(prefix + "grid-build");
-  if (files) {
-    phases.time("write", [&] {
-      write_file(files->grid, OutputKind::binary, [&](OutputFile& out) {
-        write_grid_file(indexed.reference, indexed.statistics, out);
-      });
-    });
-  }
-
+  if (hooks.indexed) hooks.indexed(indexed, direction);
   DistanceOptions distance = options.distance;
   distance.direction = direction;
   double seconds = 0;
   DistanceSet distances =
       measure_distances(std::move(sampled.samples), indexed.reference, distance, &seconds);
-  log_distances(distances, seconds);
-  phases.done(prefix + "distance");
-  if (files) {
-    phases.time("write", [&] {
-      write_file(files->distances, OutputKind::binary, [&](OutputFile& out) {
-        write_distance_file(
-            distances,
-            link_samples(files->samples.string(), samples_hash, files->distances.string()), out);
-      });
-    });
-  }
+  if (hooks.measured) hooks.measured(distances, seconds);
   return distances;
 }
 
@@ -115,6 +141,29 @@ SampleOptions reverse_sampling(const SampleSet& forward, const SampleOptions& op
 }
 
 }  // namespace
+
+Measurements measure_part(Mesh workpiece, const std::string& workpiece_source, Mesh nominal,
+                          const std::string& nominal_source, const VerifyOptions& options,
+                          const StepHooks& hooks) {
+  Measurements measured;
+  measured.forward = measure_direction(take(workpiece, options.two_sided), workpiece_source,
+                                       take(nominal, options.two_sided), nominal_source,
+                                       options.sampling, options, Direction::forward, hooks);
+  if (options.two_sided) {
+    measured.reverse = measure_direction(
+        std::move(nominal), nominal_source, std::move(workpiece), workpiece_source,
+        reverse_sampling(measured.forward.samples, options.sampling), options, Direction::reverse,
+        hooks);
+  }
+  return measured;
+}
+
+ColorizeOptions colorize_options(const VerifyOptions& options) {
+  ColorizeOptions colorize = options.colorize;
+  colorize.tolerance = options.report.tolerance;
+  colorize.units = options.report.units;
+  return colorize;
+}
 
 int run_verification(const RunJob& job) {
   const std::string part = stem(job.workpiece);
@@ -131,25 +180,18 @@ int run_verification(const RunJob& job) {
   phases.done("read");
 
   // The nominal's grid file keeps the nominal's name, as grid-build names it.
-  const DistanceSet forward = measure_direction(
-      take(workpiece, options.two_sided), workpiece_source, take(nominal, options.two_sided),
-      nominal_source, options.sampling, options, Direction::forward,
-      keep_all ? std::optional<DirectionFiles>({folder / (part + ".samples"),
-                                                folder / (stem(job.nominal) + ".grid"),
-                                                folder / (part + ".dist")})
-               : std::nullopt,
-      phases);
-  std::optional<DistanceSet> reverse;
-  if (options.two_sided) {
-    reverse = measure_direction(
-        std::move(nominal), nominal_source, std::move(workpiece), workpiece_source,
-        reverse_sampling(forward.samples, options.sampling), options, Direction::reverse,
-        keep_all ? std::optional<DirectionFiles>({folder / (part + ".reverse.samples"),
-                                                  folder / (part + ".reverse.grid"),
-                                                  folder / (part + ".reverse.dist")})
-                 : std::nullopt,
-        phases);
+  std::optional<std::array<DirectionFiles, 2>> files;
+  if (keep_all) {
+    files = {{{folder / (part + ".samples"), folder / (stem(job.nominal) + ".grid"),
+               folder / (part + ".dist")},
+              {folder / (part + ".reverse.samples"), folder / (part + ".reverse.grid"),
+               folder / (part + ".reverse.dist")}}};
   }
+  const Measurements measured =
+      measure_part(std::move(workpiece), workpiece_source, std::move(nominal), nominal_source,
+                   options, logging_and_writing(files, phases));
+  const DistanceSet& forward = measured.forward;
+  const std::optional<DistanceSet>& reverse = measured.reverse;
 
   VerificationReport report =
       make_verification_report(forward, reverse ? &*reverse : nullptr, options.report);
@@ -160,7 +202,7 @@ int run_verification(const RunJob& job) {
     write_file(folder / (part + ".report.json"), OutputKind::text,
                [&](OutputFile& out) { out.write(format_report(report, ReportFormat::json)); });
   }
-  const auto files = [&](const std::string& prefix, const std::string& histogram) {
+  const auto report_files = [&](const std::string& prefix, const std::string& histogram) {
     if (!keep_reports) return ReportFiles{histogram, "", ""};
     return ReportFiles{histogram, (folder / (prefix + ".regions.csv")).string(),
                        (folder / (prefix + ".histogram.csv")).string()};
@@ -168,20 +210,20 @@ int run_verification(const RunJob& job) {
   const std::string histogram =
       keep_reports ? in_folder(job.histogram_svg, folder / (part + ".histogram.svg")).string()
                    : job.histogram_svg;
-  for (OutputFile& out : write_report_files(report.main, files(part, histogram))) out.commit();
+  for (OutputFile& out : write_report_files(report.main, report_files(part, histogram)))
+    out.commit();
   if (keep_reports && report.reverse) {
     const std::string prefix = part + ".reverse";
     for (OutputFile& out : write_report_files(
-             *report.reverse, files(prefix, (folder / (prefix + ".histogram.svg")).string()))) {
+             *report.reverse,
+             report_files(prefix, (folder / (prefix + ".histogram.svg")).string()))) {
       out.commit();
     }
   }
   phases.done("stats");
 
   if (keep_reports) {
-    ColorizeOptions colorize = options.colorize;
-    colorize.tolerance = options.report.tolerance;
-    colorize.units = options.report.units;
+    const ColorizeOptions colorize = colorize_options(options);
     write_colored(forward, colorize, (folder / (part + ".ply")).string(),
                   in_folder(job.legend_svg, folder / (part + ".legend.svg")).string(),
                   report.main.sample_region);

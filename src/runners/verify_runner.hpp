@@ -3,6 +3,8 @@
 // in a folder, the report on standard output.
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <string>
 
 #include "runners/colorize_runner.hpp"
@@ -24,6 +26,29 @@ struct VerifyOptions {
   // measured against the workpiece, so a feature the workpiece lacks cannot pass.
   bool two_sided = true;
 };
+
+// How run paints each direction: the colour options with the report's tolerance zone.
+ColorizeOptions colorize_options(const VerifyOptions& options);
+
+// What a verification hands on as each step finishes, in order: run logs each step, times it
+// and writes its file; the library (mesh_verification.hpp) keeps only the results.
+struct StepHooks {
+  std::function<void(const SampledSurface&, Direction)> sampled;
+  std::function<void(const IndexedSurface&, Direction)> indexed;
+  std::function<void(const DistanceSet&, double seconds)> measured;  // knows its direction
+};
+
+struct Measurements {
+  DistanceSet forward;                 // the workpiece's samples against the nominal
+  std::optional<DistanceSet> reverse;  // the nominal's against the workpiece (two-sided)
+};
+
+// The measuring steps of a verification, in memory: the workpiece sampled and measured
+// against the nominal's grid, then (two-sided) the nominal sampled at the workpiece's
+// absolute step and scheme and measured against the workpiece's grid.
+Measurements measure_part(Mesh workpiece, const std::string& workpiece_source, Mesh nominal,
+                          const std::string& nominal_source, const VerifyOptions& options,
+                          const StepHooks& hooks = {});
 
 // What `run` leaves in its folder: everything (the intermediate files too, so each step can
 // be inspected or rerun), the reports and pictures only, or nothing (the report on standard
