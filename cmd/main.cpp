@@ -7,6 +7,8 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "options.hpp"
+#include "parse_errors.hpp"
 #include "util/error.hpp"
 #include "util/logging.hpp"
 #include "util/output_file.hpp"
@@ -20,11 +22,9 @@ int main(int argc, char** argv) {
   app.fallthrough();
   app.set_version_flag("--version", "ncverify " NCV_VERSION);
   bool quiet = false, verbose = false;
-  int threads = 0;
-  app.add_option("-j,--threads", threads,
-                 "Worker threads (default: all cores); results do not "
-                 "depend on it")
-      ->check(CLI::Range(0, 4096));  // NonNegativeNumber's message prints DBL_MAX in full
+  std::uint64_t threads = 0;
+  cmd::add_count_option(app, "-j,--threads", threads, 0, cmd::kMaxThreads,
+                        "Worker threads (0: all cores); results do not depend on it");
   std::unique_ptr<tbb::global_control> thread_limit;
   app.add_flag("-q,--quiet", quiet, "Only warnings and errors on standard error");
   app.add_flag("-v,--verbose", verbose, "More detail on standard error");
@@ -48,14 +48,20 @@ int main(int argc, char** argv) {
           tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
     }
   });
+  const std::vector<std::string> args(argv + 1, argv + argc);
   try {
+    if (const std::optional<std::string> unknown = cmd::unknown_command(app, args)) {
+      setup_logging(Verbosity::normal);
+      spdlog::error("{} (see --help)", *unknown);
+      return cmd::kExitBadInput;
+    }
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // --help and --version print their text and succeed. Any other parse error is bad
     // usage: one line on stderr like every other error (CLI11's own report adds a second).
     if (e.get_exit_code() == 0) return app.exit(e);
     setup_logging(Verbosity::normal);
-    spdlog::error("{} (see --help)", e.what());
+    spdlog::error("{} (see --help)", cmd::parse_error_message(e, app, args));
     return cmd::kExitBadInput;
   } catch (const InputError& e) {
     spdlog::error("{}", e.what());

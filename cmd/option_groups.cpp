@@ -51,11 +51,11 @@ void add_tolerance_option(CLI::App& sub, std::optional<Tolerance>& tolerance,
 }
 
 void add_report_options(CLI::App& sub, ReportOptions& options) {
-  sub.add_option("--bins", options.histogram.bins, "Histogram bins")->capture_default_str();
+  add_count_option(sub, "--bins", options.histogram.bins, 1, kMaxHistogramBins, "Histogram bins");
   add_parsed_option(sub, "--histogram-range", options.histogram.range, parse_value_range,
                     "Histogram range LO:HI (default: d_min to d_max)");
-  sub.add_option("--regions", options.regions, "Out-of-tolerance regions listed in the text")
-      ->capture_default_str();
+  add_count_option(sub, "--regions", options.regions, 0, kMaxListedRegions,
+                   "Out-of-tolerance regions listed in the text");
   add_units_option(sub, options.units);
 }
 

@@ -1,5 +1,9 @@
 #include "options.hpp"
 
+#include <fmt/format.h>
+
+#include <charconv>
+
 #include "commands.hpp"
 
 #include <filesystem>
@@ -9,6 +13,16 @@ namespace ncv::cmd {
 std::string option_display_name(const std::string& names) {
   const std::size_t comma = names.rfind(',');
   return comma == std::string::npos ? names : names.substr(comma + 1);
+}
+
+std::uint64_t parse_count(const std::string& text, std::uint64_t min, std::uint64_t max) {
+  std::uint64_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size() || value < min ||
+      value > max) {
+    throw UsageError(fmt::format("'{}' is not a whole number from {} to {}", text, min, max));
+  }
+  return value;
 }
 
 std::string default_output(const std::string& output, const std::string& input,

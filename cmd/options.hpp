@@ -4,6 +4,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <string>
 
 #include "util/enum_names.hpp"
@@ -47,6 +48,30 @@ CLI::Option* add_enum_option(CLI::App& sub, const std::string& names, E& target,
              description + " (" + allowed + ")")
       ->type_name("NAME")
       ->default_str(std::string(name_of(table, target)));
+}
+
+// Bounds of the count options: far beyond any use, and small enough that what they size
+// (a histogram's bins, a list's rows) stays within memory.
+inline constexpr std::uint64_t kMaxHistogramBins = 100000;
+inline constexpr std::uint64_t kMaxListedRegions = 1000000;
+inline constexpr std::uint64_t kMaxThreads = 4096;
+inline constexpr std::uint64_t kMaxHeadRecords = 1000000000000;
+
+// A whole number from `min` to `max`, parsed into an integer field of any width; the help
+// shows the range. The bounds keep every count's memory and time reasonable.
+std::uint64_t parse_count(const std::string& text, std::uint64_t min, std::uint64_t max);
+template <class Integer>
+CLI::Option* add_count_option(CLI::App& sub, const std::string& names, Integer& target,
+                              std::uint64_t min, std::uint64_t max,
+                              const std::string& description) {
+  return add_parsed_option(
+             sub, names, target,
+             [min, max](const std::string& text) {
+               return static_cast<Integer>(parse_count(text, min, max));
+             },
+             description + " (" + std::to_string(min) + " to " + std::to_string(max) + ")")
+      ->type_name("N")
+      ->default_str(std::to_string(target));
 }
 
 // OUTPUT if given; else the input's stem + extension in the current folder, or "-" when

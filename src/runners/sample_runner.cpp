@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include <filesystem>
+#include <limits>
 
 #include "files/samples_file.hpp"
 #include "mesh/mesh_reader.hpp"
@@ -22,7 +23,11 @@ SampledSurface sample_surface(Mesh mesh, const std::string& source, const Sample
   const std::uint64_t predicted = predicted_sample_count(mesh, plan);
   const std::uint64_t held =
       options.shard ? shard_range(predicted, *options.shard).size() : predicted;
-  check_memory_budget(fmt::format("sampling at step {} ({} samples)", step, held),
+  // predicted_sample_count saturates rather than wrap: say so instead of printing 2^64 - 1.
+  const std::string count = held == std::numeric_limits<std::uint64_t>::max()
+                                ? "more than 1.8e19"
+                                : fmt::format("{}", held);
+  check_memory_budget(fmt::format("sampling at step {} ({} samples)", step, count),
                       static_cast<double>(held) * kBytesPerSampleDownstream, options.force);
   SampledSurface sampled;
   sampled.samples = sample_mesh(std::move(mesh), std::move(plan), &sampled.report, options.shard);

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "statistics/limits_text.hpp"
 #include "util/error.hpp"
 
@@ -12,6 +14,9 @@ ValueRange parse_value_range(std::string_view text) {
   if (!(lo < hi)) {
     throw UsageError(fmt::format(
         "range '{}' has no width: its lower limit must be below its upper limit", text));
+  }
+  if (!std::isfinite(hi - lo)) {
+    throw UsageError(fmt::format("range '{}' is wider than a double can hold", text));
   }
   return {lo, hi};
 }

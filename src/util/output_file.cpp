@@ -51,7 +51,11 @@ void remove_pending() {
   }
 }
 
+// One line, so an interrupted job in a log says why it stopped and that it left nothing
+// half-written; outputs a command had committed before stay (run's finished steps).
 extern "C" void remove_pending_and_exit(int signal_number) {
+  static constexpr char kMessage[] = "ncverify: interrupted; no partial output left\n";
+  [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, kMessage, sizeof kMessage - 1);
   remove_pending();
   ::_exit(128 + signal_number);
 }

@@ -117,12 +117,32 @@ expect_bad_input "colour range upside down" "--range: range '1:-1': the lower li
   "$NCVERIFY" colorize good.dist -o out15 --range 1:-1
 expect_bad_input "histogram range of no width" "--histogram-range: range '0' has no width" "" \
   "$NCVERIFY" stats good.dist --histogram-range 0
-expect_bad_input "negative record count" "--head: '-5' is not a count" out15 \
+expect_bad_input "negative record count" "--head: '-5' is not a whole number from 0 to" out15 \
   "$NCVERIFY" inspect good.dist --csv --head -5 -o out15
 expect_bad_input "cell size zero" "--cell: '0' is not a positive length" out15 \
   "$NCVERIFY" grid-build box.stl -o out15 --cell 0
-expect_bad_input "unknown option" "The following argument was not expected: --stepp" out15 \
+expect_bad_input "unknown option" "unknown option '--stepp' for sample; did you mean '--step'?" out15 \
   "$NCVERIFY" sample box.stl -o out15 --stepp
+expect_bad_input "unknown command" "unknown command 'stat'; did you mean 'stats'?" "" \
+  "$NCVERIFY" stat good.dist
+expect_bad_input "unknown command after a global option" "unknown command 'frobnicate'" "" \
+  "$NCVERIFY" -j 2 frobnicate
+expect_bad_input "an option without its value" "--tol needs a value" runout \
+  "$NCVERIFY" run box.stl box.stl -d runout --tol
+expect_bad_input "histogram bins beyond the range" "--bins: '100000000' is not a whole number from 1 to 100000" "" \
+  "$NCVERIFY" stats good.dist --bins 100000000
+expect_bad_input "zero histogram bins" "--bins: '0' is not a whole number from 1 to 100000" "" \
+  "$NCVERIFY" stats good.dist --bins 0
+expect_bad_input "regions beyond the range" "--regions: '-1' is not a whole number from 0 to 1000000" "" \
+  "$NCVERIFY" stats good.dist --regions -1
+expect_bad_input "threads that are not a number" "--threads: 'abc' is not a whole number from 0 to 4096" "" \
+  "$NCVERIFY" -j abc stats good.dist
+expect_bad_input "histogram range upside down, named a range" "--histogram-range: range '1:0': the lower limit exceeds the upper limit" "" \
+  "$NCVERIFY" stats good.dist --histogram-range 1:0
+expect_bad_input "histogram range wider than a double" "is wider than a double can hold" "" \
+  "$NCVERIFY" stats good.dist --histogram-range -1e308:1e308
+expect_bad_input "a step so small the count saturates" "(more than 1.8e19 samples)" out15 \
+  "$NCVERIFY" sample box.stl -o out15 --step 1e-300
 
 # ---------------------------------------------------------------- intermediate files
 size=$(stat -c %s good.samples)
