@@ -68,8 +68,8 @@ bool takes_value(const CLI::App& app, const std::string& name) {
 
 // The subcommand the user chose, if CLI11 got that far.
 const CLI::App* chosen_subcommand(const CLI::App& app) {
-  const std::vector<const CLI::App*> chosen = app.get_subcommands(
-      [](const CLI::App* sub) { return sub->parsed(); });
+  const std::vector<const CLI::App*> chosen =
+      app.get_subcommands([](const CLI::App* sub) { return sub->parsed(); });
   return chosen.empty() ? nullptr : chosen.front();
 }
 
