@@ -2,9 +2,6 @@
 
 #include <spdlog/spdlog.h>
 
-#include <deque>
-
-#include "files/distance_job.hpp"
 #include "render/html_report.hpp"
 #include "util/output_file.hpp"
 
@@ -20,17 +17,11 @@ std::string html_page(const VerificationReport& report, const ColorizeOptions& c
 }
 
 int run_html_report(const HtmlJob& job) {
-  const PartDistances part = read_part_distances(job.distances, job.samples);
-  VerificationReport report =
-      make_verification_report(part.main, part.reverse ? &*part.reverse : nullptr, job.options);
-  report.trace = traceability(job.command_line);
-  OutputFile out(job.output, OutputKind::text);
-  std::deque<OutputFile> extras = write_report_files(report.main, job.files);
-  out.write(html_page(report, job.colors));
-  out.commit();
-  for (OutputFile& extra : extras) extra.commit();
-  spdlog::info("wrote {}", out.display_name());
-  return verdict_status(report);
+  const int status = write_part_report(
+      job.distances, job.samples, job.options, job.command_line, job.output, job.files,
+      [&job](const VerificationReport& report) { return html_page(report, job.colors); });
+  spdlog::info("wrote {}", job.output);
+  return status;
 }
 
 }  // namespace ncv

@@ -64,15 +64,25 @@ int run_stats(const StatsJob& job) {
     out.commit();
     return 0;
   }
-  const PartDistances part = read_part_distances(job.distances, job.samples);
+  return write_part_report(job.distances, job.samples, job.options, job.command_line, job.output,
+                           job.files, [&job](const VerificationReport& report) {
+                             return format_report(report, job.format, job.csv_header);
+                           });
+}
+
+int write_part_report(const std::vector<std::string>& distances, const std::string& samples,
+                      const ReportOptions& options, const std::string& command_line,
+                      const std::string& output, const ReportFiles& files,
+                      const std::function<std::string(const VerificationReport&)>& format) {
+  const PartDistances part = read_part_distances(distances, samples);
   VerificationReport report =
-      make_verification_report(part.main, part.reverse ? &*part.reverse : nullptr, job.options);
-  report.trace = traceability(job.command_line);
+      make_verification_report(part.main, part.reverse ? &*part.reverse : nullptr, options);
+  report.trace = traceability(command_line);
   // Every output open before any is committed: a histogram path that cannot be written
   // leaves no report either.
-  OutputFile out(job.output, OutputKind::text);
-  std::deque<OutputFile> extras = write_report_files(report.main, job.files);
-  out.write(format_report(report, job.format, job.csv_header));
+  OutputFile out(output, OutputKind::text);
+  std::deque<OutputFile> extras = write_report_files(report.main, files);
+  out.write(format(report));
   out.commit();
   for (OutputFile& extra : extras) extra.commit();
   return verdict_status(report);

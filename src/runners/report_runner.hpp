@@ -4,6 +4,7 @@
 #pragma once
 
 #include <deque>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,6 +45,14 @@ struct ReportFiles {
   std::string histogram_csv;
 };
 std::deque<OutputFile> write_report_files(const PartReport& report, const ReportFiles& files);
+
+// Reads a part's distance files (read_part_distances), makes its report, and writes
+// `format(report)` to `output` with the report's optional files; returns the verdict status.
+// The steps that end in a report (stats, report) differ only in `format`.
+int write_part_report(const std::vector<std::string>& distances, const std::string& samples,
+                      const ReportOptions& options, const std::string& command_line,
+                      const std::string& output, const ReportFiles& files,
+                      const std::function<std::string(const VerificationReport&)>& format);
 
 // `ncverify stats DIST...`.
 struct StatsJob {
