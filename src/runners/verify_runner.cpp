@@ -11,6 +11,7 @@
 #include "files/samples_file.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "runners/phase_log.hpp"
+#include "runners/run_folder.hpp"
 #include "util/error.hpp"
 #include "util/input_bytes.hpp"
 #include "util/output_file.hpp"
@@ -24,22 +25,8 @@ std::string stem(const std::string& path) {
   return path == "-" ? "stdin" : fs::path(path).stem().string();
 }
 
-template <class Write>
-void write_file(const fs::path& path, OutputKind kind, Write&& write) {
-  OutputFile out(path.string(), kind);
-  write(out);
-  out.commit();
-}
-
-fs::path output_folder(const RunJob& job) {
-  const fs::path folder =
-      job.folder.empty() ? fs::path(stem(job.workpiece) + ".ncverify") : fs::path(job.folder);
-  std::error_code error;
-  fs::create_directories(folder, error);
-  if (error) {
-    throw InputError(folder.string(), "cannot create the output folder: " + error.message());
-  }
-  return folder;
+fs::path folder_path(const RunJob& job) {
+  return job.folder.empty() ? fs::path(stem(job.workpiece) + ".ncverify") : fs::path(job.folder);
 }
 
 // A path the user gave, else the default in the output folder.
@@ -60,7 +47,7 @@ std::string phase_name(Direction direction, const std::string& step) {
 // its intermediate file written as soon as it is done; each distance file names the samples
 // file written before it.
 StepHooks logging_and_writing(const std::optional<std::array<DirectionFiles, 2>>& files,
-                              PhaseLog& phases) {
+                              RunFolder& folder, PhaseLog& phases) {
   struct Written {
     std::uint64_t samples_hash[2] = {0, 0};
   };
@@ -69,36 +56,38 @@ StepHooks logging_and_writing(const std::optional<std::array<DirectionFiles, 2>>
     return (*files)[static_cast<std::size_t>(direction)];
   };
   StepHooks hooks;
-  hooks.sampled = [&phases, in, files, written](const SampledSurface& sampled,
-                                                Direction direction) {
+  hooks.sampled = [&phases, &folder, in, files, written](const SampledSurface& sampled,
+                                                         Direction direction) {
     log_sampling(sampled);
     phases.done(phase_name(direction, "sample"));
     if (!files) return;
     phases.time("write", [&] {
-      write_file(in(direction).samples, OutputKind::binary, [&](OutputFile& out) {
+      folder.write(in(direction).samples, OutputKind::binary, [&](OutputFile& out) {
         written->samples_hash[static_cast<std::size_t>(direction)] =
             write_samples_file(sampled.samples, out);
       });
     });
   };
-  hooks.indexed = [&phases, in, files](const IndexedSurface& indexed, Direction direction) {
+  hooks.indexed = [&phases, &folder, in, files](const IndexedSurface& indexed,
+                                                Direction direction) {
     log_grid(indexed);
     phases.done(phase_name(direction, "grid-build"));
     if (!files) return;
     phases.time("write", [&] {
-      write_file(in(direction).grid, OutputKind::binary, [&](OutputFile& out) {
+      folder.write(in(direction).grid, OutputKind::binary, [&](OutputFile& out) {
         write_grid_file(indexed.reference, indexed.statistics, out);
       });
     });
   };
-  hooks.measured = [&phases, in, files, written](const DistanceSet& distances, double seconds) {
+  hooks.measured = [&phases, &folder, in, files, written](const DistanceSet& distances,
+                                                          double seconds) {
     log_distances(distances, seconds);
     phases.done(phase_name(distances.direction, "distance"));
     if (!files) return;
     const DirectionFiles& to = in(distances.direction);
     const std::uint64_t hash = written->samples_hash[static_cast<std::size_t>(distances.direction)];
     phases.time("write", [&] {
-      write_file(to.distances, OutputKind::binary, [&](OutputFile& out) {
+      folder.write(to.distances, OutputKind::binary, [&](OutputFile& out) {
         write_distance_file(distances,
                             link_samples(to.samples.string(), hash, to.distances.string()), out);
       });
@@ -165,18 +154,28 @@ ColorizeOptions colorize_options(const VerifyOptions& options) {
   return colorize;
 }
 
+// The paths the user gave for run's optional outputs, checked before any work.
+void check_given_outputs(const RunJob& job) {
+  for (const std::string& path : {job.histogram_svg, job.legend_svg, job.timings}) {
+    check_writable(path);
+  }
+}
+
 int run_verification(const RunJob& job) {
   const std::string part = stem(job.workpiece);
-  const fs::path folder = job.keep == Keep::none ? fs::path() : output_folder(job);
   const bool keep_all = job.keep == Keep::all, keep_reports = job.keep != Keep::none;
   const VerifyOptions& options = job.options;
   const std::string workpiece_source = input_name(job.workpiece);
   const std::string nominal_source = input_name(job.nominal);
   PhaseLog phases;
 
+  // Inputs and output paths first: a run refused for either creates nothing.
   Mesh workpiece = read_mesh(job.workpiece);
   Mesh nominal = read_mesh(job.nominal);
   refuse_if_apart(bounding_box(workpiece), workpiece_source, bounding_box(nominal), nominal_source);
+  check_given_outputs(job);
+  RunFolder folder(keep_reports ? folder_path(job) : fs::path("."));
+  folder.create();
   phases.done("read");
 
   // The nominal's grid file keeps the nominal's name, as grid-build names it.
@@ -189,7 +188,7 @@ int run_verification(const RunJob& job) {
   }
   const Measurements measured =
       measure_part(std::move(workpiece), workpiece_source, std::move(nominal), nominal_source,
-                   options, logging_and_writing(files, phases));
+                   options, logging_and_writing(files, folder, phases));
   const DistanceSet& forward = measured.forward;
   const std::optional<DistanceSet>& reverse = measured.reverse;
 
@@ -197,44 +196,51 @@ int run_verification(const RunJob& job) {
       make_verification_report(forward, reverse ? &*reverse : nullptr, options.report);
   report.trace = traceability(job.command_line);
   if (keep_reports) {
-    write_file(folder / (part + ".report.txt"), OutputKind::text,
-               [&](OutputFile& out) { out.write(format_report(report, ReportFormat::text)); });
-    write_file(folder / (part + ".report.json"), OutputKind::text,
-               [&](OutputFile& out) { out.write(format_report(report, ReportFormat::json)); });
+    folder.write(folder / (part + ".report.txt"), OutputKind::text,
+                 [&](OutputFile& out) { out.write(format_report(report, ReportFormat::text)); });
+    folder.write(folder / (part + ".report.json"), OutputKind::text,
+                 [&](OutputFile& out) { out.write(format_report(report, ReportFormat::json)); });
   }
   const auto report_files = [&](const std::string& prefix, const std::string& histogram) {
     if (!keep_reports) return ReportFiles{histogram, "", ""};
     return ReportFiles{histogram, (folder / (prefix + ".regions.csv")).string(),
                        (folder / (prefix + ".histogram.csv")).string()};
   };
+  const auto write_extras = [&](const PartReport& direction, const ReportFiles& paths) {
+    for (OutputFile& out : write_report_files(direction, paths)) {
+      out.commit();
+      folder.written(out.path());
+    }
+  };
   const std::string histogram =
       keep_reports ? in_folder(job.histogram_svg, folder / (part + ".histogram.svg")).string()
                    : job.histogram_svg;
-  for (OutputFile& out : write_report_files(report.main, report_files(part, histogram)))
-    out.commit();
+  write_extras(report.main, report_files(part, histogram));
   if (keep_reports && report.reverse) {
     const std::string prefix = part + ".reverse";
-    for (OutputFile& out : write_report_files(
-             *report.reverse,
-             report_files(prefix, (folder / (prefix + ".histogram.svg")).string()))) {
-      out.commit();
-    }
+    write_extras(*report.reverse,
+                 report_files(prefix, (folder / (prefix + ".histogram.svg")).string()));
   }
   phases.done("stats");
 
   if (keep_reports) {
     const ColorizeOptions colorize = colorize_options(options);
-    write_colored(forward, colorize, (folder / (part + ".ply")).string(),
-                  in_folder(job.legend_svg, folder / (part + ".legend.svg")).string(),
-                  report.main.sample_region);
+    const auto paint = [&](const DistanceSet& distances, const std::string& prefix,
+                           const fs::path& legend, std::span<const std::uint32_t> regions) {
+      const fs::path ply = folder / (prefix + ".ply");
+      write_colored(distances, colorize, ply.string(), legend.string(), regions);
+      folder.written(ply);
+      folder.written(legend);
+    };
+    paint(forward, part, in_folder(job.legend_svg, folder / (part + ".legend.svg")),
+          report.main.sample_region);
     if (reverse) {
-      write_colored(*reverse, colorize, (folder / (part + ".reverse.ply")).string(),
-                    (folder / (part + ".reverse.legend.svg")).string(),
-                    report.reverse->sample_region);
+      paint(*reverse, part + ".reverse", folder / (part + ".reverse.legend.svg"),
+            report.reverse->sample_region);
     }
     phases.done("colorize");
-    write_file(folder / (part + ".report.html"), OutputKind::text,
-               [&](OutputFile& out) { out.write(html_page(report, colorize)); });
+    folder.write(folder / (part + ".report.html"), OutputKind::text,
+                 [&](OutputFile& out) { out.write(html_page(report, colorize)); });
     phases.done("html");
   }
 
@@ -250,7 +256,8 @@ int run_verification(const RunJob& job) {
     figures["reverse_triangles_tested_per_sample"] = reverse->triangles_tested_per_sample();
   }
   phases.summary(job.timings, figures);
-  if (keep_reports) spdlog::info("outputs in {}/", folder.string());
+  folder.keep();
+  if (keep_reports) spdlog::info("outputs in {}/", folder.path().string());
   return verdict_status(report);
 }
 

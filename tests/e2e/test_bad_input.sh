@@ -127,6 +127,17 @@ expect_bad_input "unknown command" "unknown command 'stat'; did you mean 'stats'
   "$NCVERIFY" stat good.dist
 expect_bad_input "unknown command after a global option" "unknown command 'frobnicate'" "" \
   "$NCVERIFY" -j 2 frobnicate
+# run checks its inputs and output paths before it creates anything, and a run that fails
+# later takes back what it wrote: no file, no empty folder.
+expect_bad_input "run with a missing workpiece" "missing.stl: No such file or directory" runout \
+  "$NCVERIFY" run missing.stl box.stl -d runout/deeper
+expect_bad_input "run with a legend path that cannot be written" "nowhere/l.svg: cannot write" runout \
+  "$NCVERIFY" run box.stl box.stl -d runout --legend nowhere/l.svg
+expect_bad_input "run into a folder under a file" "cannot write: box.stl is not a folder" "" \
+  "$NCVERIFY" run box.stl box.stl -d box.stl/out
+write_box_stl taller.stl 10 10 10.5
+expect_bad_input "run that fails at its last output" "/dev/full: cannot write" runout \
+  "$NCVERIFY" -q run taller.stl box.stl -d runout/deeper --timings /dev/full
 expect_bad_input "an option without its value" "--tol needs a value" runout \
   "$NCVERIFY" run box.stl box.stl -d runout --tol
 expect_bad_input "histogram bins beyond the range" "--bins: '100000000' is not a whole number from 1 to 100000" "" \
