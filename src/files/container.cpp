@@ -1,5 +1,7 @@
 #include "files/container.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <fmt/format.h>
 #include <xxhash.h>
 
@@ -174,7 +176,10 @@ std::uint64_t Container::content_hash() const {
 }
 
 Container Container::read(const std::string& path, FileKind kind, std::uint32_t version) {
-  return parse(read_input_bytes(path), input_name(path), kind, version);
+  Container c = parse(read_input_bytes(path), input_name(path), kind, version);
+  spdlog::debug("read {}: {} version {}, {} bytes, content hash {}", c.source(), kind_tag(kind),
+                version, c.bytes_.size(), hash_hex(c.content_hash()));
+  return c;
 }
 
 Container Container::read_any(const std::string& path) {

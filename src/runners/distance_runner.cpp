@@ -120,6 +120,17 @@ DistanceSet measure_distances(SampleSet samples, const IndexedReference& referen
         compute_signed_distances(index, samples.positions, normals, method, &statistics, report);
   }
   progress.finish();
+  const auto per_query = [&](std::uint64_t count) {
+    return static_cast<double>(count) /
+           static_cast<double>(std::max<std::uint64_t>(statistics.queries, 1));
+  };
+  spdlog::debug(
+      "search: {} queries; per query {:.2f} cells visited, {:.2f} triangles box-checked "
+      "(hints included), {:.2f} tested exactly; sign by {} ({})",
+      statistics.queries, per_query(statistics.cells_visited),
+      per_query(statistics.triangles_considered), per_query(statistics.triangles_tested),
+      name_of(kSignMethodNames, method),
+      options.sign == SignMethod::automatic ? "chosen by --sign auto" : "as asked");
   if (options.direction == Direction::reverse) reverse_sign(result.field.distance);
   if (seconds) *seconds = clock.seconds();
 

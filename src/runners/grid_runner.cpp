@@ -28,6 +28,17 @@ void log_grid(const IndexedSurface& indexed) {
       g.source, g.mesh.triangle_count(), g.mesh.vertex_count(), t.closed() ? "yes" : "no",
       t.manifold() ? "yes" : "no", t.consistently_oriented() ? "yes" : "no",
       name_of(kSignMethodNames, g.surface->automatic_sign_method()));
+  spdlog::debug(
+      "{}: {} edges, {} boundary, {} used by three or more triangles, {} misoriented; {} "
+      "non-manifold vertices, {} degenerate and {} duplicate triangles; signed volume {} "
+      "(auto signs by the pseudonormal only for a closed, consistently oriented surface)",
+      g.source, t.edges, t.boundary_edges, t.non_manifold_edges, t.misoriented_edges,
+      t.non_manifold_vertices, t.degenerate_triangles, t.duplicate_triangles, t.signed_volume);
+  spdlog::debug(
+      "grid cell size {} requested ({}), {} after {} growth steps; at most {} "
+      "triangles in a cell",
+      s.requested_cell_size, s.requested_cell_size == s.cell_size ? "kept" : "grown", s.cell_size,
+      s.growth_steps, s.max_cell_triangles);
   spdlog::info(
       "grid {}×{}×{} = {} cells of {} ({} empty), {} references ({:.2f} per triangle), "
       "{}, built in {:.3f} s",

@@ -1,5 +1,7 @@
 #include "util/output_file.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -166,6 +168,9 @@ void OutputFile::commit() {
     fail(std::strerror(errno));
   }
   unregister_pending(temporary_path_);
+  std::error_code unknown;
+  const std::uintmax_t bytes = std::filesystem::file_size(path_, unknown);
+  spdlog::debug("wrote {} ({} bytes)", display_name(), unknown ? 0 : bytes);
 }
 
 }  // namespace ncv

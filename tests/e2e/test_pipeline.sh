@@ -62,4 +62,20 @@ for property in "format binary_little_endian 1.0" "property uchar red" "property
   "property list uchar int vertex_indices"; do
   check "PLY has '$property'" grep -q "$property" ply_head.txt
 done
+# -v says what a person debugging wants, beyond the default: the files read and written
+# with their sizes and hashes, the topology behind the sign method, the cell size chosen and
+# the search's work per query.
+"$NCVERIFY" grid-build "$PARTS/core_nominal.stl" -o v.grid 2>default.log
+"$NCVERIFY" -v grid-build "$PARTS/core_nominal.stl" -o v.grid 2>verbose.log
+check "-v says more than the default" test "$(wc -l <verbose.log)" -gt "$(wc -l <default.log)"
+check "-v: the topology behind the sign method" grep -q "debug: .*edges, 0 boundary, .* signed volume" verbose.log
+check "-v: the cell size chosen" grep -q "debug: grid cell size .* requested" verbose.log
+check "-v: the file written and its size" grep -q "debug: wrote v.grid ([0-9]* bytes)" verbose.log
+"$NCVERIFY" -q sample "$PARTS/core_finishing.stl" -o v.samples --step 1%
+"$NCVERIFY" -v distance v.samples v.grid -o v.dist 2>verbose.log
+check "-v: the files read, with their hashes" \
+  test "$(grep -c "debug: read v\.\(samples\|grid\): .* content hash [0-9a-f]\{16\}" verbose.log)" -eq 2
+check "-v: the search's work per query" grep -q "debug: search: .* cells visited" verbose.log
+"$NCVERIFY" -v stats v.dist 2>verbose.log >/dev/null
+check "-v: the report's phases timed" grep -q "debug: statistics, histogram, percentiles and regions in" verbose.log
 finish
