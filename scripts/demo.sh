@@ -13,7 +13,9 @@ build/ncverify run samples/parts/core_finishing.stl samples/parts/core_nominal.s
 cat >&2 <<MSG
 
 demo: the report is above; everything is in out/demo/:
+  core_finishing.report.html    the report to open in a browser (or e-mail): 3D views, regions
   core_finishing.ply            coloured workpiece (open it in MeshLab or CloudCompare)
+  core_finishing.reverse.ply    coloured nominal (the error measured from the nominal's side)
   core_finishing.legend.svg     colour bar    core_finishing.histogram.svg  error histogram
   core_finishing.report.txt/.json   the report    *.samples *.grid *.dist  intermediates
 MSG
