@@ -27,6 +27,11 @@ SamplingStep SamplingStep::parse(const std::string& text) {
   if (!std::isfinite(step.value) || step.value <= 0) {
     throw UsageError("invalid step '" + text + "': it must be a positive finite number");
   }
+  // Beyond the diagonal no triangle gets a lattice: only its corners would be measured.
+  if (step.relative && step.value > 100) {
+    throw UsageError("invalid step '" + text +
+                     "': at most 100% of the bounding-box diagonal (the default is 0.1%)");
+  }
   return step;
 }
 

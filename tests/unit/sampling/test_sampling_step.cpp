@@ -16,8 +16,10 @@ TEST_CASE("steps are absolute or a percentage of the diagonal", "[sampling]") {
 }
 
 TEST_CASE("bad steps are refused", "[sampling]") {
-  for (const char* bad : {"", "0", "-1", "nan", "inf", "0%", "1%%", "abc", "1mm", "%", " 1"}) {
+  for (const char* bad :
+       {"", "0", "-1", "nan", "inf", "0%", "1%%", "abc", "1mm", "%", " 1", "100.5%", "200%"}) {
     INFO(bad);
     CHECK_THROWS_AS(SamplingStep::parse(bad), UsageError);
   }
+  CHECK(SamplingStep::parse("100%").value == 100);  // the diagonal itself is the limit
 }
