@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <cmath>
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -34,11 +36,6 @@ double overlap_share(const BoundingBox& a, const BoundingBox& b) {
   return inter / std::min(va, vb);
 }
 
-struct SampledPart {
-  BoundingBox box;
-  std::string source;
-};
-
 // Reverse: the error is + where the nominal point lies inside the workpiece (material left),
 // the negated signed distance to the workpiece; a point on it stays +0.
 void reverse_sign(Buffer<double>& distances) {
@@ -50,36 +47,31 @@ void reverse_sign(Buffer<double>& distances) {
                     });
 }
 
-// What the two files' geometry can tell about whether they belong together. Certain: a
-// workpiece whose every point is farther from the nominal than the size of either part is
-// not a machining of it in its frame; no tolerance verdict on it means anything, and an
-// "out of tolerance" would send someone to rework a part that was never measured, so it is
-// refused. Only suspicious (warned, measured anyway): little overlap, no overlap at close
-// range, very different sizes, or the nominal itself given as the workpiece (zero
-// everywhere; a legitimate self-check, a mix-up otherwise).
-void check_belong_together(const SampleSet& samples, const IndexedReference& reference,
-                           Direction direction) {
-  const bool forward = direction == Direction::forward;
-  const SampledPart workpiece = forward
-                                    ? SampledPart{bounding_box(samples.mesh), samples.source}
-                                    : SampledPart{bounding_box(reference.mesh), reference.source};
-  const SampledPart nominal = forward ? SampledPart{bounding_box(reference.mesh), reference.source}
-                                      : SampledPart{bounding_box(samples.mesh), samples.source};
-  refuse_if_apart(workpiece.box, workpiece.source, nominal.box, nominal.source);
-  if (samples.mesh_hash == reference.hash) {
-    spdlog::warn("the workpiece ({}) is the nominal ({}) itself: every distance is zero",
-                 workpiece.source, nominal.source);
-  }
-  const double share = overlap_share(workpiece.box, nominal.box);
-  if (share < 0.5) {
+// What a size ratio between the parts suggests: the usual unit factors by name.
+std::string unit_mismatch(double ratio) {
+  const double factor = ratio >= 1 ? ratio : 1 / ratio;
+  const auto near = [factor](double unit) { return std::fabs(factor / unit - 1) < 0.05; };
+  const std::string larger = ratio >= 1 ? "workpiece" : "nominal";
+  if (near(25.4)) return "inches against millimetres? (the " + larger + " is the one in mm)";
+  if (near(1000)) return "metres against millimetres? (the " + larger + " is the one in mm)";
+  if (near(10)) return "centimetres against millimetres?";
+  return "a unit mismatch?";
+}
+
+// A simulated workpiece is a dense mesh of small triangles and a CAD nominal a coarse one;
+// the other way round by far, the two were probably given in the wrong order.
+void warn_if_swapped(const Mesh& workpiece, const std::string& workpiece_source,
+                     const Mesh& nominal, const std::string& nominal_source) {
+  const auto w = static_cast<double>(workpiece.triangle_count());
+  const auto n = static_cast<double>(nominal.triangle_count());
+  if (!(n > 20 * w) || w == 0) return;
+  const double workpiece_mean = surface_area(workpiece) / w,
+               nominal_mean = surface_area(nominal) / n;
+  if (workpiece_mean > 20 * nominal_mean) {
     spdlog::warn(
-        "the workpiece ({}) and the nominal ({}) barely overlap ({:.0f} % of the "
-        "smaller bounding box): a wrong file, unit or coordinate frame?",
-        workpiece.source, nominal.source, 100 * share);
-  }
-  const double ratio = workpiece.box.diagonal() / std::max(nominal.box.diagonal(), 1e-300);
-  if (ratio > 5 || ratio < 0.2) {
-    spdlog::warn("the workpiece is {:.3g} times the size of the nominal: a unit mismatch?", ratio);
+        "the workpiece ({}, {} triangles) is far coarser than the nominal ({}, {} triangles): "
+        "were they given the other way round? (the workpiece comes first)",
+        workpiece_source, workpiece.triangle_count(), nominal_source, nominal.triangle_count());
   }
 }
 
@@ -98,9 +90,46 @@ void refuse_if_apart(const BoundingBox& workpiece, const std::string& workpiece_
   }
 }
 
+// What the two files' geometry can tell about whether they belong together. Certain: a
+// workpiece whose every point is farther from the nominal than the size of either part is
+// not a machining of it in its frame; no tolerance verdict on it means anything, and an
+// "out of tolerance" would send someone to rework a part that was never measured, so it is
+// refused. Only suspicious (warned, measured anyway): little overlap, no overlap at close
+// range, very different sizes, or the nominal itself given as the workpiece (zero
+// everywhere; a legitimate self-check, a mix-up otherwise).
+void check_parts(const Mesh& workpiece, const std::string& workpiece_source, const Mesh& nominal,
+                 const std::string& nominal_source) {
+  const BoundingBox workpiece_box = bounding_box(workpiece), nominal_box = bounding_box(nominal);
+  refuse_if_apart(workpiece_box, workpiece_source, nominal_box, nominal_source);
+  if (workpiece.triangle_count() == nominal.triangle_count() &&
+      mesh_hash(workpiece) == mesh_hash(nominal)) {
+    spdlog::warn("the workpiece ({}) is the nominal ({}) itself: every distance is zero",
+                 workpiece_source, nominal_source);
+  }
+  const double share = overlap_share(workpiece_box, nominal_box);
+  if (share < 0.5) {
+    spdlog::warn(
+        "the workpiece ({}) and the nominal ({}) barely overlap ({:.0f} % of the "
+        "smaller bounding box): a wrong file, unit or coordinate frame?",
+        workpiece_source, nominal_source, 100 * share);
+  }
+  const double ratio = workpiece_box.diagonal() / std::max(nominal_box.diagonal(), 1e-300);
+  if (ratio > 5 || ratio < 0.2) {
+    spdlog::warn("the workpiece is {:.3g} times the size of the nominal: {}", ratio,
+                 unit_mismatch(ratio));
+  }
+  warn_if_swapped(workpiece, workpiece_source, nominal, nominal_source);
+}
+
 DistanceSet measure_distances(SampleSet samples, const IndexedReference& reference,
                               const DistanceOptions& options, double* seconds) {
-  check_belong_together(samples, reference, options.direction);
+  if (options.direction == Direction::forward) {
+    refuse_if_apart(bounding_box(samples.mesh), samples.source, bounding_box(reference.mesh),
+                    reference.source);
+  } else {
+    refuse_if_apart(bounding_box(reference.mesh), reference.source, bounding_box(samples.mesh),
+                    samples.source);
+  }
   const ReferenceSurface& surface = *reference.surface;
   const SignMethod method = resolve_sign_method(surface, options.sign);
   const std::vector<Vec3> normals =
@@ -161,6 +190,11 @@ void run_distance(const DistanceJob& job) {
       Container::read(job.samples, FileKind::samples, kSamplesFormatVersion);
   SampleSet samples = load_sample_set(samples_file);
   const IndexedReference reference = read_grid_file(job.grid);
+  if (job.options.direction == Direction::forward) {
+    check_parts(samples.mesh, samples.source, reference.mesh, reference.source);
+  } else {
+    check_parts(reference.mesh, reference.source, samples.mesh, samples.source);
+  }
   double seconds = 0;
   const DistanceSet result =
       measure_distances(std::move(samples), reference, job.options, &seconds);

@@ -27,9 +27,13 @@ struct DistanceOptions {
 void refuse_if_apart(const BoundingBox& workpiece, const std::string& workpiece_source,
                      const BoundingBox& nominal, const std::string& nominal_source);
 
-// The same refusal; then warns when they barely overlap, differ in size five times or are
-// the same mesh (a wrong file, unit or frame?), then measures every sample; `seconds`
-// receives the time the measuring took.
+// The same refusal, then warnings where the parts look mixed up: the same mesh twice, little
+// overlap, sizes five times apart (named when the factor is an inch or a metre), a workpiece
+// far coarser than its nominal (given the other way round?). Called once per part.
+void check_parts(const Mesh& workpiece, const std::string& workpiece_source, const Mesh& nominal,
+                 const std::string& nominal_source);
+
+// The refusal, then measures every sample; `seconds` receives the time the measuring took.
 DistanceSet measure_distances(SampleSet samples, const IndexedReference& reference,
                               const DistanceOptions& options, double* seconds = nullptr);
 // Samples per second, triangles tested per sample and the sign method, on stderr.

@@ -17,8 +17,7 @@ Verification verify(const TriMesh& workpiece, const TriMesh& nominal, const Veri
                     const MeshNames& names) {
   Mesh workpiece_arrays = mesh_arrays(workpiece, names.workpiece);
   Mesh nominal_arrays = mesh_arrays(nominal, names.nominal);
-  refuse_if_apart(bounding_box(workpiece_arrays), names.workpiece, bounding_box(nominal_arrays),
-                  names.nominal);
+  check_parts(workpiece_arrays, names.workpiece, nominal_arrays, names.nominal);
   Measurements measured = measure_part(std::move(workpiece_arrays), names.workpiece,
                                        std::move(nominal_arrays), names.nominal, options);
   Verification verification;

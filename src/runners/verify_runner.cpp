@@ -172,7 +172,7 @@ int run_verification(const RunJob& job) {
   // Inputs and output paths first: a run refused for either creates nothing.
   Mesh workpiece = read_mesh(job.workpiece);
   Mesh nominal = read_mesh(job.nominal);
-  refuse_if_apart(bounding_box(workpiece), workpiece_source, bounding_box(nominal), nominal_source);
+  check_parts(workpiece, workpiece_source, nominal, nominal_source);
   check_given_outputs(job);
   RunFolder folder(keep_reports ? folder_path(job) : fs::path("."));
   folder.create();

@@ -180,6 +180,17 @@ measure beside nominal.stl beside.stl
 expect_numbers beside 15 5
 check "no overlap: warned" warned beside "barely overlap (0 %"
 
+# Mixed-up inputs are measured, with one warning each in a two-sided run: a workpiece in
+# inches against a nominal in millimetres, and the two parts given the other way round (the
+# 12-triangle box as the workpiece, the dense scallop mesh as the nominal).
+gen box inches.stl 0 0 0 0.3937 0.3937 0.3937
+measure inches inches.stl nominal.stl
+check "inches against millimetres: named" warned inches "inches against millimetres? (the nominal is the one in mm)"
+measure swapped "$NCV_SOURCE_DIR/samples/parts/box_nominal.stl" "$NCV_SOURCE_DIR/samples/parts/box_scallop.stl"
+check "swapped parts: warned once" test "$(grep -c "were they given the other way round" swapped.err)" -eq 1
+measure not_swapped "$NCV_SOURCE_DIR/samples/parts/box_scallop.stl" "$NCV_SOURCE_DIR/samples/parts/box_nominal.stl"
+check "the right order: no such warning" test "$(grep -c "other way round" not_swapped.err)" -eq 0
+
 # A nominal mixing huge and tiny triangles: a 1 m box and a 2 mm sheet of 245,000
 # triangles make the paper's mean-area cell too small for the 1 m box; the cell grows so
 # cells stay <= 8 and references <= 16 per triangle, and memory with them.
