@@ -3,8 +3,10 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
+#include "files/distance_file.hpp"
 #include "mesh/mesh.hpp"
 #include "sampling/sampling.hpp"
 
@@ -54,6 +56,22 @@ inline std::vector<double> distances_of(const SampleSet& samples,
   std::vector<double> d(samples.sample_count());
   for (std::size_t s = 0; s < d.size(); ++s) d[s] = field(samples.positions[s]);
   return d;
+}
+
+// `mesh` sampled at `step` with the linear field d = x / 10 - 0.2 as its forward distances,
+// against a two-triangle plate nominal: the report tests' part.
+inline DistanceSet linear_field_part(Mesh mesh, double step, const std::string& source) {
+  DistanceSet set;
+  set.samples = sample_mesh(std::move(mesh), step, SamplingScheme::all);
+  set.samples.source = source;
+  for (const Vec3& p : set.samples.positions) {
+    set.field.distance.push_back(p[0] / 10 - 0.2);
+    set.field.closest_face.push_back(0);
+  }
+  set.reference = {"plate_nominal.stl", 42, 2, {}};
+  set.sign_method = "pseudonormal";
+  set.search = "grid";
+  return set;
 }
 
 }  // namespace ncv::test

@@ -15,18 +15,9 @@ namespace {
 
 // A 10 x 10 plate with d = x / 10 - 0.2, as the stats report tests use.
 DistanceSet plate() {
-  DistanceSet set;
-  set.samples = sample_mesh(test::flat_grid(4, 10.0), 0.25, SamplingScheme::all);
-  set.samples.source = "parts/plate<1>.stl";
+  DistanceSet set = test::linear_field_part(test::flat_grid(4, 10.0), 0.25, "parts/plate<1>.stl");
   set.samples.step_spec = "0.25";
   set.samples.mesh_hash = 0x1234;
-  for (const Vec3& p : set.samples.positions) {
-    set.field.distance.push_back(p[0] / 10 - 0.2);
-    set.field.closest_face.push_back(0);
-  }
-  set.reference = {"plate_nominal.stl", 42, 2, {}};
-  set.sign_method = "pseudonormal";
-  set.search = "grid";
   return set;
 }
 

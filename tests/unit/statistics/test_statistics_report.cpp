@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "statistics/statistics_report.hpp"
+#include "stats_fixtures.hpp"
 
 using namespace ncv;
 
@@ -13,17 +14,8 @@ namespace {
 // A 10 × 10 square sampled finely, with d = x / 10 - 0.2: a linear field from -0.2 to 0.8.
 DistanceSet linear_field_part() {
   Mesh square{{{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {10, 10, 0}}, {{0, 1, 2}, {3, 2, 1}}};
-  DistanceSet set;
-  set.samples = sample_mesh(std::move(square), 0.5, SamplingScheme::all);
-  set.samples.source = "parts/plate.stl";
+  DistanceSet set = test::linear_field_part(std::move(square), 0.5, "parts/plate.stl");
   set.samples.step_spec = "0.5";
-  for (const Vec3& p : set.samples.positions) {
-    set.field.distance.push_back(p[0] / 10 - 0.2);
-    set.field.closest_face.push_back(0);
-  }
-  set.reference = {"plate_nominal.stl", 42, 2, {}};
-  set.sign_method = "pseudonormal";
-  set.search = "grid";
   return set;
 }
 
