@@ -1,5 +1,7 @@
 // ncverify stats DIST: error measures against a tolerance, as text, JSON or CSV; exit
 // status 1 when out of tolerance.
+#include <unistd.h>
+
 #include "commands.hpp"
 #include "option_groups.hpp"
 #include "options.hpp"
@@ -10,9 +12,10 @@ void add_stats_command(CLI::App& app, CommandContext& context) {
   auto job = std::make_shared<StatsJob>();
   CLI::App* sub = app.add_subcommand(
       "stats", "Error measures of a distance file; exit 1 when out of tolerance");
-  sub->add_option("distances", job->distances,
-                  "Distance file from `distance` (- = stdin), and optionally the same part's "
-                  "reverse distance file (`distance --reverse`); or every shard's of each");
+  sub->add_option(
+      "distances", job->distances,
+      "Distance file from `distance` (- or none: standard input), and optionally the same part's "
+      "reverse distance file (`distance --reverse`); or every shard's of each");
   add_samples_file_option(*sub, job->samples);
   add_enum_option(*sub, "--format", job->format, kReportFormatNames, "Report format");
   sub->add_flag(
@@ -30,8 +33,14 @@ void add_stats_command(CLI::App& app, CommandContext& context) {
   add_report_file_options(*sub, job->files);
   sub->callback([job, &context] {
     job->command_line = context.command_line;
+    // No file named: standard input, as `-` reads it, unless it is a terminal (nobody
+    // types a binary file).
     if (job->distances.empty() && !job->csv_header_only) {
-      throw UsageError("stats: give a distance file");
+      if (::isatty(STDIN_FILENO)) {
+        throw UsageError(
+            "stats: give a distance file, or pipe one in (`distance ... -o - | stats`)");
+      }
+      job->distances.push_back("-");
     }
     context.exit_status = run_stats(*job);
   });

@@ -43,6 +43,11 @@ assert a.pop('traceability')['inputs'] == b.pop('traceability')['inputs']
 assert a == b"
 "$NCVERIFY" -q colorize - -o piped.ply --tol -0.05:0.1 <fin.dist
 check "colorize reads standard input" test -s piped.ply
+"$NCVERIFY" stats --tol -0.05:0.1 --format json <fin.dist >omitted.json
+check "stats without a file reads standard input, as its help says" /usr/bin/python3 -c "
+import json
+a, b = (json.load(open(f)) for f in ('omitted.json', 'file.json'))
+assert a['error'] == b['error'] and a['tolerance'] == b['tolerance']"
 
 # Exactness and determinism.
 "$NCVERIFY" -q --threads 1 distance fin.samples core.grid -o one.dist
