@@ -131,11 +131,11 @@ expect_bad_input "unknown command after a global option" "unknown command 'frobn
 # later takes back what it wrote: no file, no empty folder.
 expect_bad_input "run with a missing workpiece" "missing.stl: No such file or directory" runout \
   "$NCVERIFY" run missing.stl box.stl -d runout/deeper
-expect_bad_input "run with a legend path that cannot be written" "nowhere/l.svg: cannot write" runout \
-  "$NCVERIFY" run box.stl box.stl -d runout --legend nowhere/l.svg
-expect_bad_input "run into a folder under a file" "cannot write: box.stl is not a folder" "" \
-  "$NCVERIFY" run box.stl box.stl -d box.stl/out
 write_box_stl taller.stl 10 10 10.5
+expect_bad_input "run with a legend path that cannot be written" "nowhere/l.svg: cannot write" runout \
+  "$NCVERIFY" run taller.stl box.stl -d runout --legend nowhere/l.svg
+expect_bad_input "run into a folder under a file" "cannot write: box.stl is not a folder" "" \
+  "$NCVERIFY" run taller.stl box.stl -d box.stl/out
 expect_bad_input "run that fails at its last output" "/dev/full: cannot write" runout \
   "$NCVERIFY" -q run taller.stl box.stl -d runout/deeper --timings /dev/full
 expect_bad_input "an option without its value" "--tol needs a value" runout \
