@@ -6,7 +6,8 @@
 # default); each host runs one task at a time, with all its cores.
 # VARIABLEs are samples/Makefile's (STEP, TOL, ...). PARTS, OUT, this repository and NCVERIFY
 # must be at the same path on every host (a shared filesystem), reachable by ssh without a
-# password. The grids first, then the parts, then the summary; exit status the summary's.
+# password. The grids first, then the shards (SHARDS > 1), then the parts, then the summary;
+# exit status the summary's.
 set -euo pipefail
 hosts=:
 if [ "${1:-}" = -S ]; then
@@ -14,7 +15,7 @@ if [ "${1:-}" = -S ]; then
   shift 2
 fi
 if [ $# -lt 2 ]; then
-  sed -n '2,10s/^# \{0,1\}//p' "$0" >&2
+  sed -n '2,11s/^# \{0,1\}//p' "$0" >&2
   exit 2
 fi
 scripts=$(cd "$(dirname "$0")/../batch" && pwd)
@@ -26,5 +27,6 @@ run() {
     "$scripts/task.sh" "$batch" {} <"$batch/$1" || true
 }
 run grids.txt
+run shards.txt
 run parts.txt
 exec "$scripts/task.sh" "$batch" summary

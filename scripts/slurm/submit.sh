@@ -5,9 +5,13 @@
 # VARIABLEs are samples/Makefile's (STEP, TOL, SCHEME, SIGN, CELL, BINS, NCVERIFY, ...);
 # SBATCH_OPTIONs go to every job (--partition, --time, --mem, --cpus-per-task: ncverify's
 # threads). PARTS, OUT, this repository and NCVERIFY must be at the same path on every node.
-# Three steps, each starting when the one before has ended, however (afterany):
-#   ncverify-grid     job arrays, one task per nominal: its grid
-#   ncverify-part     job arrays, one task per workpiece: samples, distances, CSV row, PLY
+# The steps, each starting when the one before has ended, however (afterany):
+#   ncverify-grid     job arrays, one task per nominal: its grid (with SHARDS > 1, also each
+#                     workpiece's grid for the reverse direction)
+#   ncverify-shard    with SHARDS > 1: job arrays, one task per shard of each workpiece: its
+#                     samples and distances in both directions
+#   ncverify-part     job arrays, one task per workpiece: samples, distances (or the shards'
+#                     put together), CSV row, PLY, HTML report
 #   ncverify-summary  OUT/summary.csv; the job fails unless every part passes
 # A part whose task failed gets an error row, never a stale one. Logs: OUT/batch/log/.
 # Prints the job ids; the last line is the summary job's.
@@ -15,7 +19,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 scripts=$(cd "$here/../batch" && pwd)
 if [ $# -lt 2 ]; then
-  sed -n '2,13s/^# \{0,1\}//p' "$0" >&2
+  sed -n '2,17s/^# \{0,1\}//p' "$0" >&2
   exit 2
 fi
 make_args=()
@@ -56,9 +60,11 @@ arrays() {
 }
 
 grids=$(arrays ncverify-grid grids.txt "")
-parts=$(arrays ncverify-part parts.txt "$grids")
-summary=$(sbatch_job "$(echo "$grids:$parts" | sed 's/^:*//; s/:*$//')" summary.txt 0 \
-  --job-name=ncverify-summary --output="$log/ncverify-summary-%j.out")
+shards=$(arrays ncverify-shard shards.txt "$grids")
+parts=$(arrays ncverify-part parts.txt "$(echo "$grids:$shards" | sed 's/^:*//; s/:*$//')")
+summary=$(sbatch_job "$(echo "$grids:$shards:$parts" | sed 's/::*/:/g; s/^:*//; s/:*$//')" \
+  summary.txt 0 --job-name=ncverify-summary --output="$log/ncverify-summary-%j.out")
 echo "grids: ${grids:-none}"
+echo "shards: ${shards:-none}"
 echo "parts: ${parts:-none}"
 echo "$summary"

@@ -52,12 +52,11 @@ void log_sampling(const SampledSurface& sampled) {
                r.degenerate_triangles, sampled.seconds);
 }
 
-SampleOptions sampling_like(const std::string& samples_path, bool force) {
+SampleOptions sampling_like(const std::string& samples_path, const SampleOptions& given) {
   const SamplingSettings settings = read_sampling_settings(samples_path);
-  SampleOptions options;
+  SampleOptions options = given;
   options.step = SamplingStep{settings.step, false};
   options.scheme = settings.scheme;
-  options.force = force;
   options.step_label =
       settings.step_spec + " of " + std::filesystem::path(settings.source).filename().string();
   return options;
@@ -67,7 +66,7 @@ SampleOptions sampling_like(const std::string& samples_path, bool force) {
 // report follows the commit, so a failure is the only line on stderr.
 void run_sample(const SampleJob& job) {
   const SampleOptions options =
-      job.step_from.empty() ? job.options : sampling_like(job.step_from, job.options.force);
+      job.step_from.empty() ? job.options : sampling_like(job.step_from, job.options);
   OutputFile out(job.output, OutputKind::binary);
   const SampledSurface sampled = sample_surface(read_mesh(job.mesh), input_name(job.mesh), options);
   write_samples_file(sampled.samples, out);

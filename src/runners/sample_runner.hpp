@@ -37,8 +37,8 @@ void log_sampling(const SampledSurface& sampled);
 
 // The options another samples file was made with: its absolute step (so that the nominal of a
 // two-sided check is sampled as densely as its workpiece) and its scheme; the step as given
-// reads "0.1% of core_finishing.stl".
-SampleOptions sampling_like(const std::string& samples_path, bool force);
+// reads "0.1% of core_finishing.stl". The rest (--shard, --force) as `given`.
+SampleOptions sampling_like(const std::string& samples_path, const SampleOptions& given);
 
 // `ncverify sample MESH -o OUT`.
 struct SampleJob {

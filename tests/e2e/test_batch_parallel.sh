@@ -21,6 +21,11 @@ check "the counts end its output" grep -q "^summary $WORK/results/summary.csv: 1
 "$NCV_SOURCE_DIR/scripts/parallel/verify_parts.sh" -S : parts results "${settings[@]}" >run2.log 2>&1
 check "nothing is redone the second time" test "$(grep -c -- '-q ' run2.log)" -eq 0
 check "and the summary is the same" cmp make/summary.csv results/summary.csv
+"$NCV_SOURCE_DIR/scripts/parallel/verify_parts.sh" -S : parts sharded "${settings[@]}" SHARDS=3 \
+  >sharded.log 2>&1
+check "in three shards a part: the same summary, byte for byte" cmp make/summary.csv sharded/summary.csv
+check "a task per shard, and the reverse grids with the grids" \
+  test "$(tail -n +2 sharded/batch/log/shards.txt.joblog | wc -l) $(tail -n +2 sharded/batch/log/grids.txt.joblog | wc -l)" = "9 4"
 expect_status 2 "a VARIABLE=value that is not one refuses" \
   "$NCV_SOURCE_DIR/scripts/parallel/verify_parts.sh" -S : parts results2 tol=0.1
 check "nothing left by the refused batch" test ! -e results2

@@ -142,4 +142,15 @@ check "-B: every row counts" grep -q ": 3 pass, 2 fail$" run15.log
 touch -d '1 hour ago' out/*
 batch -n TOL=0.3 "${settings[@]:1}" >run16.log 2>&1
 check "-n makes no result" test -z "$(find out -maxdepth 1 -type f -newer parts/box_nominal.stl)"
+
+# SHARDS: each part measured in pieces gives the same rows, to the bit; a new SHARDS redoes
+# the samples, as any sampling option does, and a bad one is refused before any work.
+batch -j2 "${settings[@]}" >run17.log 2>&1
+cp out/summary.csv whole.csv
+batch -j2 "${settings[@]}" SHARDS=3 >run18.log 2>&1
+check "three shards a part: the same summary, byte for byte" cmp whole.csv out/summary.csv
+check "each part in three shards, both directions" test "$(ls out/*.s[123].dist | wc -l)" -eq 30
+check "a new SHARDS redoes the samples" test "$(ran sample run18.log)" -eq 30
+batch SHARDS=0 >run19.log 2>&1
+check "SHARDS=0 is refused" grep -q "SHARDS=0: give a whole number from 1 to 1000" run19.log
 finish

@@ -163,12 +163,16 @@ started=$SECONDS
 "$NCV_SOURCE_DIR/scripts/slurm/submit.sh" "$parts" "$WORK/slurm" "${settings[@]}" \
   >"$WORK/submit.log" 2>&1
 check "submit.sh submits the batch" test $? -eq 0
-summary_job=$(tail -n 1 "$WORK/submit.log")
-state=
-for _ in $(seq 600); do
-  state=$(scontrol show job "$summary_job" 2>/dev/null | grep -o 'JobState=[A-Z_]*' | cut -d= -f2)
-  case $state in PENDING | RUNNING | CONFIGURING | COMPLETING | "") sleep 0.5 ;; *) break ;; esac
-done
+# final_state JOB: waits (at most 5 minutes) for the job to end and prints its state.
+final_state() {
+  local state=
+  for _ in $(seq 600); do
+    state=$(scontrol show job "$1" 2>/dev/null | grep -o 'JobState=[A-Z_]*' | cut -d= -f2)
+    case $state in PENDING | RUNNING | CONFIGURING | COMPLETING | "") sleep 0.5 ;; *) break ;; esac
+  done
+  echo "$state"
+}
+state=$(final_state "$(tail -n 1 "$WORK/submit.log")")
 echo "slurm batch: $((SECONDS - started)) s from sbatch to the summary job's end ($state)"
 check "the summary job ran, and failed as parts are out of tolerance" test "$state" = FAILED
 check "Slurm's summary is the Makefile's, byte for byte" \
@@ -188,4 +192,18 @@ check "a part whose grid task failed is an error row quoting it" \
   grep -q '^"broken_a",.*,error,"grid-build: error: .*broken_nominal.stl' "$WORK/slurm/summary.csv"
 check "the part task of a failed grid does not rebuild it" \
   grep -q 'broken_nominal.grid is not up to date' "$WORK"/slurm/batch/log/ncverify-part-*.out
+
+# The same batch with every part in two shards: a shard task per shard (both directions),
+# the reverse grids with the nominals', and the summary still the Makefile's, byte for byte.
+"$NCV_SOURCE_DIR/scripts/slurm/submit.sh" "$parts" "$WORK/sharded" "${settings[@]}" SHARDS=2 \
+  >"$WORK/sharded.log" 2>&1
+check "submit.sh submits the sharded batch" test $? -eq 0
+state=$(final_state "$(tail -n 1 "$WORK/sharded.log")")
+check "the sharded batch's summary job ran and failed" test "$state" = FAILED
+check "the sharded summary is the Makefile's, byte for byte" \
+  cmp "$WORK/make/summary.csv" "$WORK/sharded/summary.csv"
+check "one shard task per shard of each workpiece with a nominal" \
+  test "$(ls "$WORK"/sharded/batch/log/ncverify-shard-*.out | wc -l)" -eq 10
+check "a grid task per nominal and per workpiece (its reverse grid)" \
+  test "$(ls "$WORK"/sharded/batch/log/ncverify-grid-*.out | wc -l)" -eq 7
 finish
