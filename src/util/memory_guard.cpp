@@ -4,6 +4,12 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <charconv>
+#include <cstdlib>
+#include <optional>
+#include <string_view>
+
 #include "util/error.hpp"
 
 namespace ncv {
@@ -29,15 +35,40 @@ std::string format_bytes(std::uint64_t bytes) {
   return fmt::format("{} B", bytes);
 }
 
+namespace {
+
+// A positive whole number from the environment, else none.
+std::optional<std::uint64_t> environment_count(const char* name) {
+  const char* text = std::getenv(name);
+  if (!text) return std::nullopt;
+  std::uint64_t value = 0;
+  const std::string_view view(text);
+  const auto [end, error] = std::from_chars(view.data(), view.data() + view.size(), value);
+  if (error != std::errc() || end != view.data() + view.size() || value == 0) return std::nullopt;
+  return value;
+}
+
+}  // namespace
+
+std::uint64_t memory_budget_bytes() {
+  std::uint64_t budget = physical_memory_bytes() / 2;
+  // A Slurm job started with --mem is killed beyond it (SLURM_MEM_PER_NODE, in MiB).
+  if (const auto slurm = environment_count("SLURM_MEM_PER_NODE")) {
+    budget = std::min(budget, (*slurm << 20) / 5 * 4);
+  }
+  if (const auto given = environment_count("NCV_MEMORY_BUDGET")) budget = std::min(budget, *given);
+  return budget;
+}
+
 void check_memory_budget(const std::string& what, double bytes, bool force) {
-  const std::uint64_t budget = physical_memory_bytes() / 2;
+  const std::uint64_t budget = memory_budget_bytes();
   if (force || bytes <= static_cast<double>(budget)) return;
   // The estimate can exceed 2^64 (a step of 1e-9 on a large part), where converting it to
   // an integer is undefined behaviour: it is written as a double.
   const std::string needed = bytes < 1e12 ? format_bytes(static_cast<std::uint64_t>(bytes))
                                           : fmt::format("{:.3g} GB", bytes / 1e9);
   throw UsageError(
-      fmt::format("{} would need about {} of memory (this machine allows {}); "
+      fmt::format("{} would need about {} of memory (the budget is {}); "
                   "use a larger step, or --force",
                   what, needed, format_bytes(budget)));
 }

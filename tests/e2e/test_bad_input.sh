@@ -152,6 +152,10 @@ expect_bad_input "histogram range upside down, named a range" "--histogram-range
   "$NCVERIFY" stats good.dist --histogram-range 1:0
 expect_bad_input "histogram range wider than a double" "is wider than a double can hold" "" \
   "$NCVERIFY" stats good.dist --histogram-range -1e308:1e308
+expect_bad_input "a step beyond NCV_MEMORY_BUDGET" "would need about 3.2 MB of memory (the budget is 1.0 MB)" out15 \
+  env NCV_MEMORY_BUDGET=1000000 "$NCVERIFY" sample box.stl -o out15 --step 1%
+expect_bad_input "a step beyond 80 % of a Slurm job's --mem" "(the budget is 838.9 kB)" out15 \
+  env SLURM_MEM_PER_NODE=1 "$NCVERIFY" sample box.stl -o out15 --step 1%
 expect_bad_input "a step beyond the diagonal" "invalid step '200%': at most 100% of the bounding-box diagonal" out15 \
   "$NCVERIFY" sample box.stl -o out15 --step 200%
 expect_bad_input "a step so small the count saturates" "(more than 1.8e19 samples)" out15 \
