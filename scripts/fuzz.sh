@@ -12,7 +12,7 @@ seconds=${1:-60}
 [ $# -gt 0 ] && shift
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] ||
-  targets=(samples_file grid_file distance_file mesh stl tolerance sampling_step)
+  targets=(samples_file grid_file distance_file mesh stl tolerance sampling_step command_line)
 
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DNCV_FUZZ=ON -DNCV_SANITIZE=ON \
   -DNCV_WERROR=ON -DNCV_GENERATOR=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
@@ -22,6 +22,7 @@ dictionary() {
   case $1 in
     mesh | stl) echo fuzz/dict/mesh.dict ;;
     tolerance | sampling_step) echo fuzz/dict/number.dict ;;
+    command_line) echo fuzz/dict/command_line.dict ;;
     *) echo fuzz/dict/container.dict ;;
   esac
 }
