@@ -17,7 +17,6 @@
 namespace ncv::cmd {
 
 int run_ncverify(int argc, char** argv) {
-
   CLI::App app{"ncverify: measures how far a machined workpiece mesh is from its nominal part"};
   app.require_subcommand(1);
   app.fallthrough();
@@ -25,7 +24,7 @@ int run_ncverify(int argc, char** argv) {
   bool quiet = false, verbose = false;
   std::uint64_t threads = 0;
   add_count_option(app, "-j,--threads", threads, 0, kMaxThreads,
-                        "Worker threads (0: all cores); results do not depend on it");
+                   "Worker threads (0: all cores); results do not depend on it");
   std::unique_ptr<tbb::global_control> thread_limit;
   app.add_flag("-q,--quiet", quiet, "Only warnings and errors on standard error");
   app.add_flag("-v,--verbose", verbose, "More detail on standard error");
