@@ -26,7 +26,9 @@ def read_ncverify(path):
 
 def sample_points(arrays):
     """Every sample's position and owning triangle, in sample order (FORMATS.md, the lattice)."""
-    vertices, triangles = arrays["mesh_vertices"], arrays["mesh_triangles"].astype(np.int64)
+    # Vertices may be stored as <f4 (exact floats): the lattice is computed in double.
+    vertices = arrays["mesh_vertices"].astype(np.float64)
+    triangles = arrays["mesh_triangles"].astype(np.int64)
     sizes = arrays["lattice_sizes"].astype(np.int64)
     sampled = np.flatnonzero(sizes >= 2)
     # Vertex samples: the vertices of sampled triangles, in vertex order, each owned by its

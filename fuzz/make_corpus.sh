@@ -8,7 +8,7 @@ ncverify=${1:-$here/../build/ncverify}
 corpus=$here/corpus
 # Inputs that once crashed a target (regression-*) stay: they are replayed on every run.
 find "$corpus" -type f ! -name 'regression-*' -delete 2>/dev/null || true
-mkdir -p "$corpus"/{mesh,stl,samples_file,grid_file,distance_file,tolerance,sampling_step}
+mkdir -p "$corpus"/{mesh,stl,samples_file,grid_file,distance_file,tolerance,sampling_step,command_line}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -79,4 +79,82 @@ printf '%s' '1e-3:2.5E2' >"$corpus/tolerance/exponents"
 printf '%s' '0.1%' >"$corpus/sampling_step/percent"
 printf '%s' '0.05' >"$corpus/sampling_step/absolute"
 printf '%s' '1e-3' >"$corpus/sampling_step/exponent"
+# Argument vectors for fuzz_command_line, one argument a line (the files are those its
+# scratch folder holds).
+printf '%s' 'colorize
+low.dist
+-o
+out.ply
+--map
+turbo
+--range
+-1:1
+--legend
+out.svg' >"$corpus/command_line/colorize"
+printf '%s' 'distance
+low.samples
+box.grid
+-o
+out.dist
+--sign
+winding' >"$corpus/command_line/distance"
+printf '%s' 'grid-build
+box.stl
+-o
+out.grid
+--cell
+0.5' >"$corpus/command_line/grid"
+printf '%s' 'inspect
+low.dist
+--csv
+--head
+3' >"$corpus/command_line/inspect"
+printf '%s' 'report
+low.dist
+box.reverse.dist
+--tol
+0.1
+-o
+out.html' >"$corpus/command_line/report"
+printf '%s' 'run
+low.stl
+box.stl
+--tol
+0.1
+--step
+2%
+-d
+outdir' >"$corpus/command_line/run"
+printf '%s' '-q
+run
+low.stl
+box.stl
+--one-sided
+--format
+json
+--keep
+none
+--step
+3%' >"$corpus/command_line/run_one_sided_json"
+printf '%s' 'sample
+low.stl
+-o
+out.samples
+--step
+2%
+--shard
+2/3' >"$corpus/command_line/sample_shard"
+printf '%s' 'stats
+low.dist
+box.reverse.dist
+--tol
+-0.1:0.1
+--format
+csv
+--bins
+8' >"$corpus/command_line/stats_both"
+printf '%s' 'stat
+low.dist
+--tols
+0.1' >"$corpus/command_line/typo"
 du -sh "$corpus"/*

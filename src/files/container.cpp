@@ -39,7 +39,7 @@ void store(char* at, T value) {
 
 std::size_t dtype_width(const std::string& dtype) {
   if (dtype == "<f8" || dtype == "<u8") return 8;
-  if (dtype == "<u4") return 4;
+  if (dtype == "<u4" || dtype == "<f4") return 4;
   if (dtype == "<u2") return 2;
   if (dtype == "<u1") return 1;
   return 0;
@@ -106,6 +106,41 @@ void ContainerWriter::add_raw(std::string name, const char* dtype, std::size_t w
                               const void* data, std::uint64_t bytes,
                               std::vector<std::uint64_t> shape) {
   sections_.push_back({std::move(name), dtype, width, data, bytes, std::move(shape)});
+}
+
+void ContainerWriter::add_counts(std::string name, const std::vector<std::uint32_t>& counts) {
+  const std::uint32_t largest =
+      counts.empty() ? 0 : *std::max_element(counts.begin(), counts.end());
+  const auto add_as = [&]<class T>(T) {
+    const std::span<const T> narrow = keep(std::vector<T>(counts.begin(), counts.end()));
+    add<T>(std::move(name), narrow, {narrow.size()});
+  };
+  if (largest <= 0xff) {
+    add_as(std::uint8_t{});
+  } else if (largest <= 0xffff) {
+    add_as(std::uint16_t{});
+  } else {
+    add<std::uint32_t>(std::move(name), keep(counts), {counts.size()});
+  }
+}
+
+void ContainerWriter::add_points(std::string name, std::span<const Vec3> points) {
+  const bool floats = std::all_of(points.begin(), points.end(), [](const Vec3& p) {
+    return static_cast<double>(static_cast<float>(p[0])) == p[0] &&
+           static_cast<double>(static_cast<float>(p[1])) == p[1] &&
+           static_cast<double>(static_cast<float>(p[2])) == p[2];
+  });
+  if (!floats) {
+    add<double>(std::move(name),
+                {reinterpret_cast<const double*>(points.data()), points.size() * 3},
+                {points.size(), 3});
+    return;
+  }
+  std::vector<float> flat(points.size() * 3);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (int k = 0; k < 3; ++k) flat[3 * i + k] = static_cast<float>(points[i][k]);
+  }
+  add<float>(std::move(name), keep(flat), {points.size(), 3});
 }
 
 std::uint64_t ContainerWriter::write(OutputFile& out) {
@@ -323,6 +358,32 @@ std::uint64_t Container::checked_count(const std::string& name, const char* dtyp
                      rows, columns));
   }
   return s.elements;
+}
+
+std::vector<std::uint32_t> Container::get_counts(const std::string& name,
+                                                 std::uint64_t rows) const {
+  if (!has(name)) fail(fmt::format("section '{}' is missing", name));
+  const std::string& type = dtype(name);
+  if (type == "<u1") {
+    const auto narrow = get<std::uint8_t>(name, rows);
+    return {narrow.begin(), narrow.end()};
+  }
+  if (type == "<u2") {
+    const auto narrow = get<std::uint16_t>(name, rows);
+    return {narrow.begin(), narrow.end()};
+  }
+  return get<std::uint32_t>(name, rows);
+}
+
+std::vector<Vec3> Container::get_points(const std::string& name, std::uint64_t rows) const {
+  if (!has(name)) fail(fmt::format("section '{}' is missing", name));
+  if (dtype(name) != "<f4") return get_rows<double, Vec3>(name, rows);
+  const std::vector<float> flat = get<float>(name, rows * 3);
+  std::vector<Vec3> points(rows, Vec3(0, 0, 0));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    points[i] = Vec3(flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]);
+  }
+  return points;
 }
 
 void Container::copy_section(const std::string& name, void* out, std::size_t bytes) const {

@@ -25,6 +25,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "geometry/vec3.hpp"
 #include "util/buffer.hpp"
 #include "util/error.hpp"
 #include "util/input_bytes.hpp"
@@ -36,7 +37,7 @@ enum class FileKind { samples, grid, distances };
 
 // The format version this build writes and reads, per kind.
 inline constexpr std::uint32_t kSamplesFormatVersion = 3;
-inline constexpr std::uint32_t kGridFormatVersion = 1;
+inline constexpr std::uint32_t kGridFormatVersion = 2;
 inline constexpr std::uint32_t kDistancesFormatVersion = 3;
 std::uint32_t format_version(FileKind kind);
 
@@ -48,6 +49,10 @@ constexpr const char* dtype_of();
 template <>
 constexpr const char* dtype_of<double>() {
   return "<f8";
+}
+template <>
+constexpr const char* dtype_of<float>() {
+  return "<f4";
 }
 template <>
 constexpr const char* dtype_of<std::uint8_t>() {
@@ -84,6 +89,12 @@ class ContainerWriter {
     std::memcpy(bytes.data(), data.data(), bytes.size());
     return {reinterpret_cast<const T*>(bytes.data()), data.size()};
   }
+  // Counts in the narrowest unsigned type that holds the largest (<u1, <u2 or <u4): most
+  // are small, so a byte each. Read back with Container::get_counts.
+  void add_counts(std::string name, const std::vector<std::uint32_t>& counts);
+  // Points as <f4 when every coordinate is a float exactly (as binary STL gives them), else
+  // <f8: half the bytes, the same values. Read back with Container::get_points.
+  void add_points(std::string name, std::span<const Vec3> points);
   // Returns the content hash (the trailer) of what it wrote.
   std::uint64_t write(OutputFile& out);
 
@@ -142,6 +153,10 @@ class Container {
     copy_section(name, out.data(), out.size() * sizeof(Row));
     return out;
   }
+  // A section written by ContainerWriter::add_counts, `rows` values, widened.
+  std::vector<std::uint32_t> get_counts(const std::string& name, std::uint64_t rows) const;
+  // A section written by ContainerWriter::add_points, `rows` points, widened exactly.
+  std::vector<Vec3> get_points(const std::string& name, std::uint64_t rows) const;
   // Raw access for generic tools (inspect): the bytes are little-endian `dtype` values.
   struct RawSection {
     std::string dtype;

@@ -56,11 +56,16 @@ T number_field(const Container& c, const std::string& pointer) {
 
 void write_grid_file(const IndexedReference& g, const GridStatistics& statistics, OutputFile& out) {
   ContainerWriter writer(FileKind::grid, kGridFormatVersion, grid_meta(g, statistics));
-  writer.add<double>("nominal_vertices", flat_coordinates(g.mesh.vertices),
-                     {g.mesh.vertex_count(), 3});
+  writer.add_points("nominal_vertices", g.mesh.vertices);
   writer.add<std::uint32_t>("nominal_triangles", flat_indices(g.mesh.triangles),
                             {g.mesh.triangle_count(), 3});
-  writer.add<std::uint64_t>("cell_offsets", g.grid.cell_offsets, {g.grid.cell_offsets.size()});
+  // Each cell's count rather than its offset: most cells of a dense mesh's grid are empty or
+  // short, so a byte each instead of eight.
+  std::vector<std::uint32_t> counts(g.grid.cell_count());
+  for (std::size_t c = 0; c < counts.size(); ++c) {
+    counts[c] = static_cast<std::uint32_t>(g.grid.cell_offsets[c + 1] - g.grid.cell_offsets[c]);
+  }
+  writer.add_counts("cell_counts", counts);
   writer.add<std::uint32_t>("cell_triangles", g.grid.cell_triangles,
                             {g.grid.cell_triangles.size()});
   writer.write(out);
@@ -73,7 +78,7 @@ IndexedReference read_grid_file(const std::string& path) {
 IndexedReference load_indexed_reference(const Container& c) {
   IndexedReference g;
   const std::uint64_t V = c.count("/nominal/vertices"), T = c.count("/nominal/triangles");
-  g.mesh.vertices = c.get_rows<double, Vec3>("nominal_vertices", V);
+  g.mesh.vertices = c.get_points("nominal_vertices", V);
   g.mesh.triangles = c.get_rows<std::uint32_t, Triangle>("nominal_triangles", T);
   if (!c.field("/nominal/hash").is_string()) c.fail("nominal hash is malformed");
   g.hash = parse_hash_hex(c.field("/nominal/hash").get<std::string>(), c);
@@ -98,7 +103,11 @@ IndexedReference load_indexed_reference(const Container& c) {
   g.grid.cell_size = number_field<double>(c, "/grid/cell_size");
   const auto cells = BackgroundGrid::checked_cell_count(g.grid.dims);
   if (!cells) c.fail("grid dimensions overflow");
-  g.grid.cell_offsets = c.get<std::uint64_t>("cell_offsets", *cells + 1);
+  const std::vector<std::uint32_t> counts = c.get_counts("cell_counts", *cells);
+  g.grid.cell_offsets.assign(counts.size() + 1, 0);
+  for (std::size_t cell = 0; cell < counts.size(); ++cell) {
+    g.grid.cell_offsets[cell + 1] = g.grid.cell_offsets[cell] + counts[cell];
+  }
   g.grid.cell_triangles = c.get<std::uint32_t>("cell_triangles", c.count("/grid/references"));
   g.grid.validate(*g.surface, c.source());
   return g;

@@ -35,28 +35,6 @@ std::optional<Shard> shard_of(const Container& c) {
   return Shard{static_cast<std::uint32_t>(index - 1), static_cast<std::uint32_t>(count)};
 }
 
-// Lattice sizes are stored in the narrowest unsigned type that holds the largest: most
-// triangles of a simulated workpiece are tiny (size 2), so one byte each.
-template <class T>
-void add_sizes_as(ContainerWriter& writer, const std::vector<std::uint32_t>& sizes) {
-  const std::span<const T> narrow = writer.keep(std::vector<T>(sizes.begin(), sizes.end()));
-  writer.add<T>("lattice_sizes", narrow, {narrow.size()});
-}
-
-std::vector<std::uint32_t> lattice_sizes(const Container& c, std::uint64_t triangles) {
-  if (!c.has("lattice_sizes")) c.fail("section 'lattice_sizes' is missing");
-  const std::string& dtype = c.dtype("lattice_sizes");
-  if (dtype == "<u1") {
-    const auto narrow = c.get<std::uint8_t>("lattice_sizes", triangles);
-    return {narrow.begin(), narrow.end()};
-  }
-  if (dtype == "<u2") {
-    const auto narrow = c.get<std::uint16_t>("lattice_sizes", triangles);
-    return {narrow.begin(), narrow.end()};
-  }
-  return c.get<std::uint32_t>("lattice_sizes", triangles);
-}
-
 }  // namespace
 
 SamplingSettings sampling_settings(const Container& c) {
@@ -102,26 +80,17 @@ nlohmann::json sample_set_meta(const SampleSet& set) {
 }
 
 void add_sample_sections(ContainerWriter& writer, const SampleSet& set) {
-  const std::uint64_t V = set.mesh.vertex_count(), T = set.mesh.triangle_count();
-  writer.add<double>("mesh_vertices", flat_coordinates(set.mesh.vertices), {V, 3});
+  const std::uint64_t T = set.mesh.triangle_count();
+  writer.add_points("mesh_vertices", set.mesh.vertices);
   writer.add<std::uint32_t>("mesh_triangles", flat_indices(set.mesh.triangles), {T, 3});
-  const std::uint32_t largest =
-      set.lattice_sizes.empty()
-          ? 0
-          : *std::max_element(set.lattice_sizes.begin(), set.lattice_sizes.end());
-  if (largest <= 0xff) {
-    add_sizes_as<std::uint8_t>(writer, set.lattice_sizes);
-  } else if (largest <= 0xffff) {
-    add_sizes_as<std::uint16_t>(writer, set.lattice_sizes);
-  } else {
-    writer.add<std::uint32_t>("lattice_sizes", set.lattice_sizes, {T});
-  }
+  // Most triangles of a simulated workpiece are tiny (size 2): a byte each.
+  writer.add_counts("lattice_sizes", set.lattice_sizes);
 }
 
 SampleSet load_sample_set(const Container& c, bool whole) {
   const std::uint64_t V = c.count("/mesh/vertices"), T = c.count("/mesh/triangles");
   Mesh mesh;
-  mesh.vertices = c.get_rows<double, Vec3>("mesh_vertices", V);
+  mesh.vertices = c.get_points("mesh_vertices", V);
   mesh.triangles = c.get_rows<std::uint32_t, Triangle>("mesh_triangles", T);
   validate_mesh(mesh, c);
   if (!c.field("/mesh/hash").is_string()) c.fail("mesh hash is malformed");
@@ -130,7 +99,7 @@ SampleSet load_sample_set(const Container& c, bool whole) {
   const SamplingSettings settings = sampling_settings(c);
 
   SamplingPlan plan = plan_sampling(mesh, settings.step, settings.scheme);
-  if (plan.lattice_sizes != lattice_sizes(c, T)) {
+  if (plan.lattice_sizes != c.get_counts("lattice_sizes", T)) {
     c.fail(
         "its lattice sizes are not those of its step: written by an ncverify that rounds "
         "differently; sample the mesh again");
