@@ -86,7 +86,7 @@ class ContainerWriter {
   template <class T>
   std::span<const T> keep(const std::vector<T>& data) {
     std::vector<char>& bytes = kept_.emplace_back(data.size() * sizeof(T));
-    std::memcpy(bytes.data(), data.data(), bytes.size());
+    if (!data.empty()) std::memcpy(bytes.data(), data.data(), bytes.size());  // never null
     return {reinterpret_cast<const T*>(bytes.data()), data.size()};
   }
   // Counts in the narrowest unsigned type that holds the largest (<u1, <u2 or <u4): most
