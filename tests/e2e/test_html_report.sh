@@ -14,9 +14,16 @@ CHECK="$NCV_SOURCE_DIR/tests/e2e/browser_check.mjs"
   >/dev/null 2>&1
 regions=$(/usr/bin/python3 -c "import json; c = json.load(open('fin/core_finishing.report.json'))['region_counts']; print(c['excess'] + c['gouge'])")
 check "the finishing part has regions to show" test "$regions" -gt 20
-if EXPECT_REGIONS=$regions EXPECT_VIEWS=2 EXPECT_VERDICT=FAIL EXPECT_EXCESS=1 EXPECT_GOUGE=1 \
-  node "$CHECK" report fin/core_finishing.report.html page.png >browser.log 2>&1; then
+# browser_page: the page checked once in a fresh headless chromium.
+browser_page() {
+  EXPECT_REGIONS=$regions EXPECT_VIEWS=2 EXPECT_VERDICT=FAIL EXPECT_EXCESS=1 EXPECT_GOUGE=1 \
+    node "$CHECK" report fin/core_finishing.report.html page.png >browser.log 2>&1
+}
+# A second try only when the first failed, with its log kept: on a loaded machine chromium
+# has been seen to miss a step's deadline once in a while; a page that is wrong fails both.
+if browser_page || { cp browser.log browser.first.log && browser_page; }; then
   pass
+  [ -s browser.first.log ] && echo "note: the first try failed: $(grep -v '^canvas' browser.first.log | head -5)"
 else
   fail "the finishing part's page in chromium: $(grep -v '^canvas' browser.log | head -20)"
 fi
