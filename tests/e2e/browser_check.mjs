@@ -50,7 +50,8 @@ async function startBrowser() {
     `--user-data-dir=${profile}`, '--remote-debugging-port=0', `--window-size=${WIDTH},${HEIGHT}`,
     'about:blank',
   ];
-  const browser = spawn(CHROMIUM, args, { stdio: ['ignore', 'ignore', 'pipe'] });
+  // Its own process group, so that stopping it stops its renderer and GPU processes too.
+  const browser = spawn(CHROMIUM, args, { stdio: ['ignore', 'ignore', 'pipe'], detached: true });
   let log = '';
   browser.stderr.on('data', (chunk) => { log += chunk; });
   const portFile = join(profile, 'DevToolsActivePort');
@@ -65,10 +66,20 @@ async function startBrowser() {
   const stop = async () => {
     if (browser.exitCode === null) {
       const exited = new Promise((done) => browser.once('exit', done));
-      browser.kill('SIGKILL');
+      try {
+        process.kill(-browser.pid, 'SIGKILL');
+      } catch {
+        browser.kill('SIGKILL');
+      }
       await exited;
     }
-    rmSync(profile, { recursive: true, force: true, maxRetries: 5, retryDelay: 200 });
+    // A child still closing may write into the profile for a moment: retry, and never fail
+    // the check over a temporary folder.
+    try {
+      rmSync(profile, { recursive: true, force: true, maxRetries: 20, retryDelay: 250 });
+    } catch (error) {
+      console.error(`note: the browser profile ${profile} stays: ${error.message}`);
+    }
   };
   return { port, stop };
 }
