@@ -43,6 +43,12 @@ void add_distance_options(CLI::App& sub, DistanceOptions& options) {
                   "paper: the sample's own normal (the paper's rule)");
   sub.add_flag("--brute-force", options.brute_force,
                "Test every nominal triangle for every sample (the reference; slow)");
+  add_parsed_option(sub, "--certify", options.certify->width, parse_positive_length,
+                    "Width of the certified interval for the max and the min error between "
+                    "samples, in model units (default: 0.001)");
+  add_count_option(sub, "--certify-points", options.certify->points_cap, 0, kMaxCertifyPoints,
+                   "Most points certification may add by refinement (0: as many as the lattice "
+                   "has samples, at least 20000)");
 }
 
 void add_tolerance_option(CLI::App& sub, std::optional<Tolerance>& tolerance,

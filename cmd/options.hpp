@@ -56,6 +56,8 @@ inline constexpr std::uint64_t kMaxHistogramBins = 100000;
 inline constexpr std::uint64_t kMaxListedRegions = 1000000;
 inline constexpr std::uint64_t kMaxThreads = 4096;
 inline constexpr std::uint64_t kMaxHeadRecords = 1000000000000;
+// Each point certification adds holds about 170 bytes of patches while it works.
+inline constexpr std::uint64_t kMaxCertifyPoints = 50000000;
 
 // A whole number from `min` to `max`, parsed into an integer field of any width; the help
 // shows the range. The bounds keep every count's memory and time reasonable.

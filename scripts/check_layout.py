@@ -7,7 +7,7 @@ import re
 import sys
 
 # Pipeline order, lowest first: the same list as docs/ARCHITECTURE.md.
-STAGES = ["util", "geometry", "mesh", "sampling", "reference", "search", "distance", "files",
+STAGES = ["util", "geometry", "mesh", "sampling", "reference", "search", "distance", "certify", "files",
           "statistics", "render", "runners"]
 INCLUDE = re.compile(r'^#include "([a-z_]+)/([a-z_0-9]+\.hpp)"', re.M)
 

@@ -12,7 +12,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
-#include "reference/winding_number.hpp"
+#include "distance/side_rule.hpp"
 #include "search/closest_point_search.hpp"
 #include "util/error.hpp"
 
@@ -57,21 +57,23 @@ class SignedDistanceJob {
  public:
   SignedDistanceJob(const ReferenceSurface& nominal, const SearchIndex* grid,
                     std::span<const Vec3> points, std::span<const Vec3> normals, SignMethod method)
-      : nominal_(nominal), grid_(grid), points_(points), normals_(normals), method_(method) {
-    if (method_ == SignMethod::winding)
-      tree_ = std::make_unique<WindingNumberTree>(nominal.corners());
-  }
+      : nominal_(nominal),
+        grid_(grid),
+        points_(points),
+        normals_(normals),
+        side_(nominal, method) {}
 
   void run(DistanceField& field, std::size_t begin, std::size_t end) {
     Worker& worker = workers_.local();
     if (grid_ && !worker.search) worker.search.emplace(*grid_);
+    const bool paper = side_.method() == SignMethod::paper;
     for (std::size_t i = begin; i < end; ++i) {
       if (worker.search && i % kDistanceBlockSize == 0) worker.search->forget_hint();
       const Vec3 p = nominal_.to_local(points_[i]);
       const ClosestHit hit = worker.search
                                  ? worker.search->closest(p, worker.counters)
                                  : brute_force_closest(nominal_.corners(), p, worker.counters);
-      field.distance[i] = signed_value(i, p, hit);
+      field.distance[i] = side_.signed_value(p, hit, paper ? normals_[i] : Vec3(0, 0, 0));
       field.closest_face[i] = hit.triangle;
     }
   }
@@ -87,39 +89,11 @@ class SignedDistanceJob {
   }
 
  private:
-  double signed_value(std::size_t i, Vec3 p, const ClosestHit& hit) const {
-    if (hit.squared_distance == 0) return 0.0;
-    const double distance = std::sqrt(hit.squared_distance);
-    return is_inside(i, p, hit) ? -distance : distance;
-  }
-
-  bool is_inside(std::size_t i, Vec3 p, const ClosestHit& hit) const {
-    const Vec3 offset = p - hit.point;
-    switch (method_) {
-      case SignMethod::paper:
-        return !(dot(normals_[i], offset) > 0);
-      case SignMethod::winding:
-        return tree_->evaluate(p) >= 0.5;
-      default: {  // pseudonormal; automatic was resolved by the constructor's caller
-        const Vec3 normal = nominal_.pseudonormal(hit.triangle, hit.feature);
-        const double side = dot(offset, normal);
-        if (side != 0) return side < 0;
-        // With a usable pseudonormal, the offset of a point off the surface lies in the
-        // feature's normal cone, where the dot product is strictly positive or negative;
-        // a zero comes only from a point on the surface whose offset is rounding noise
-        // (common: machined faces that coincide with nominal ones), so its sign is moot.
-        if (normal != Vec3(0, 0, 0)) return false;
-        return winding_number_exact(nominal_.corners(), p) >= 0.5;
-      }
-    }
-  }
-
   const ReferenceSurface& nominal_;
   const SearchIndex* grid_;
   std::span<const Vec3> points_;
   std::span<const Vec3> normals_;
-  SignMethod method_;
-  std::unique_ptr<WindingNumberTree> tree_;
+  SideRule side_;
   tbb::enumerable_thread_specific<Worker> workers_;
 };
 

@@ -39,6 +39,77 @@ std::string string_field(const Container& c, const std::string& pointer) {
   return value.get<std::string>();
 }
 
+nlohmann::json point_json(Vec3 p) {
+  return {p[0], p[1], p[2]};
+}
+
+Vec3 point_from(const Container& c, const nlohmann::json& value) {
+  if (!value.is_array() || value.size() != 3) c.fail("a certificate point is malformed");
+  Vec3 p(0, 0, 0);
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!value[axis].is_number()) c.fail("a certificate point is malformed");
+    p[axis] = value[axis].get<double>();
+  }
+  return p;
+}
+
+nlohmann::json extreme_json(const CertifiedExtreme& e) {
+  return {{"measured", e.measured},
+          {"measured_at", point_json(e.measured_at)},
+          {"bound", e.bound},
+          {"bound_at", point_json(e.bound_at)}};
+}
+
+double number_from(const Container& c, const nlohmann::json& object, const char* key) {
+  if (!object.contains(key) || !object[key].is_number() ||
+      !std::isfinite(object[key].get<double>())) {
+    c.fail(fmt::format("certificate field {} is not a finite number", key));
+  }
+  return object[key].get<double>();
+}
+
+CertifiedExtreme extreme_from(const Container& c, const nlohmann::json& object) {
+  if (!object.is_object() || !object.contains("measured_at") || !object.contains("bound_at")) {
+    c.fail("a certificate extreme is malformed");
+  }
+  return {number_from(c, object, "measured"), point_from(c, object["measured_at"]),
+          number_from(c, object, "bound"), point_from(c, object["bound_at"])};
+}
+
+nlohmann::json certificate_json(const Certificate& c) {
+  return {{"width_asked", c.width_asked},   {"points_cap", c.points_cap},
+          {"max", extreme_json(c.max)},     {"min", extreme_json(c.min)},
+          {"patches", c.patches},           {"refined_patches", c.refined_patches},
+          {"added_points", c.added_points}, {"unresolved", c.unresolved},
+          {"sign_proven", c.sign_proven},   {"first_anchor", c.first_anchor},
+          {"end_anchor", c.end_anchor}};
+}
+
+Certificate certificate_from(const Container& c) {
+  const nlohmann::json& j = c.meta()["certificate"];
+  if (!j.is_object() || !j.contains("sign_proven") || !j["sign_proven"].is_boolean() ||
+      !j.contains("max") || !j.contains("min")) {
+    c.fail("its certificate is malformed");
+  }
+  Certificate cert;
+  cert.width_asked = number_from(c, j, "width_asked");
+  cert.points_cap = c.count("/certificate/points_cap");
+  cert.max = extreme_from(c, j["max"]);
+  cert.min = extreme_from(c, j["min"]);
+  cert.patches = c.count("/certificate/patches");
+  cert.refined_patches = c.count("/certificate/refined_patches");
+  cert.added_points = c.count("/certificate/added_points");
+  cert.unresolved = c.count("/certificate/unresolved");
+  cert.sign_proven = j["sign_proven"].get<bool>();
+  cert.first_anchor = c.count("/certificate/first_anchor");
+  cert.end_anchor = c.count("/certificate/end_anchor");
+  if (!(cert.max.bound >= cert.max.measured) || !(cert.min.bound <= cert.min.measured) ||
+      cert.first_anchor > cert.end_anchor) {
+    c.fail("its certificate is inconsistent");
+  }
+  return cert;
+}
+
 nlohmann::json distance_meta(const DistanceSet& set, const std::optional<SamplesLink>& link) {
   nlohmann::json meta = sample_set_meta(set.samples);
   meta["samples_file"] = link ? nlohmann::json{{"path", link->path}, {"hash", hash_hex(link->hash)}}
@@ -52,6 +123,7 @@ nlohmann::json distance_meta(const DistanceSet& set, const std::optional<Samples
                       {"sign_method", set.sign_method},
                       {"search", set.search},
                       {"triangles_tested", set.triangles_tested}};
+  if (set.certificate) meta["certificate"] = certificate_json(*set.certificate);
   meta["records"] = {{"name", "samples"},
                      {"count", set.samples.sample_count()},
                      {"first", set.samples.first_sample},
@@ -123,6 +195,7 @@ DistanceRecords load_distance_records(Container container, const std::string& pa
   r.sign_method = string_field(c, "/distance/sign_method");
   r.search = string_field(c, "/distance/search");
   r.triangles_tested = c.count("/distance/triangles_tested");
+  if (c.meta().contains("certificate")) r.certificate = certificate_from(c);
   r.distance = c.get<double, Buffer<double>>("distance", S);
   r.closest_face = c.get<std::uint32_t, Buffer<std::uint32_t>>("closest_face", S);
   for (std::uint64_t s = 0; s < S; ++s) {
@@ -180,6 +253,7 @@ DistanceSet assemble_distance_set(DistanceRecords r, SampleSet samples) {
   set.sign_method = std::move(r.sign_method);
   set.search = std::move(r.search);
   set.triangles_tested = r.triangles_tested;
+  set.certificate = r.certificate;
   return set;
 }
 

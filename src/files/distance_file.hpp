@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "certify/certificate.hpp"
 #include "distance/direction.hpp"
 #include "distance/signed_distance.hpp"
 #include "files/container.hpp"
@@ -36,6 +37,9 @@ struct DistanceSet {
   std::string sign_method;             // the method used (never "auto")
   std::string search;                  // "grid" or "brute-force"
   std::uint64_t triangles_tested = 0;  // exact point-triangle tests over the samples held
+  // Bounds on the error between the samples (docs/CERTIFICATION.md); none when the file was
+  // made without certification.
+  std::optional<Certificate> certificate;
 
   double triangles_tested_per_sample() const {
     return samples.sample_count()
@@ -78,6 +82,7 @@ struct DistanceRecords {
   std::string sign_method;
   std::string search;
   std::uint64_t triangles_tested = 0;
+  std::optional<Certificate> certificate;
   Buffer<double> distance;
   Buffer<std::uint32_t> closest_face;
 };

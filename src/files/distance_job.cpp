@@ -36,6 +36,22 @@ void check_same_job(const DistanceRecords& first, const DistanceRecords& other) 
   }
 }
 
+// The shards' certificates as one, in shard order; none unless every shard has one.
+std::optional<Certificate> merged_certificate(const std::vector<const DistanceRecords*>& shards) {
+  std::optional<Certificate> whole = shards.front()->certificate;
+  for (std::size_t k = 1; k < shards.size() && whole; ++k) {
+    if (!shards[k]->certificate) return std::nullopt;
+    whole = merged(*whole, *shards[k]->certificate);
+    if (!whole) {
+      throw UsageError(
+          fmt::format("the certificates of {} and {} do not belong together (another "
+                      "--certify width?)",
+                      shown(*shards[k - 1]), shown(*shards[k])));
+    }
+  }
+  return whole;
+}
+
 // One direction's files as one DistanceSet.
 DistanceSet merge_direction(std::vector<DistanceRecords> records, const std::string& samples_path) {
   const std::string direction(name_of(kDirectionNames, records.front().direction));
@@ -77,6 +93,7 @@ DistanceSet merge_direction(std::vector<DistanceRecords> records, const std::str
   set.search = first.search;
   set.field.distance.resize(set.samples.sample_count());
   set.field.closest_face.resize(set.samples.sample_count());
+  set.certificate = merged_certificate(by_index);
   // The shards' ranges partition the samples (load_distance_records checked each range).
   for (const DistanceRecords* r : by_index) {
     std::copy(r->distance.begin(), r->distance.end(),

@@ -25,22 +25,20 @@ constexpr const char* kContentSecurityPolicy =
 // in the view).
 constexpr std::size_t kMostRegionRows = 5000;
 
-enum class Verdict { pass, fail, none };
+// The banner's four states: the three verdicts, and none without a tolerance.
+enum class Banner { pass, fail, inconclusive, none };
 
-Verdict verdict_of(const PartReport& r) {
-  if (!r.statistics.tolerance) return Verdict::none;
-  return r.statistics.tolerance->pass ? Verdict::pass : Verdict::fail;
-}
-
-Verdict overall_verdict(const HtmlReport& report) {
-  if (report.fails) return Verdict::fail;
-  for (const HtmlDirection& d : report.directions) {
-    if (verdict_of(*d.report) == Verdict::fail) return Verdict::fail;
+Banner banner_of(const HtmlReport& report) {
+  if (!report.verdict) return Banner::none;
+  switch (*report.verdict) {
+    case Verdict::pass:
+      return Banner::pass;
+    case Verdict::fail:
+      return Banner::fail;
+    case Verdict::inconclusive:
+      break;
   }
-  for (const HtmlDirection& d : report.directions) {
-    if (verdict_of(*d.report) == Verdict::pass) return Verdict::pass;
-  }
-  return Verdict::none;
+  return Banner::inconclusive;
 }
 
 std::string esc(std::string_view text) {
@@ -169,7 +167,7 @@ std::string short_title(const PartReport& r) {
                                                       : "Nominal against workpiece";
 }
 
-std::string verdict_reason(const HtmlReport& report, const NumberStyle& n) {
+std::string banner_reason(const HtmlReport& report, const NumberStyle& n) {
   std::string reason;
   for (const HtmlDirection& d : report.directions) {
     const ErrorStatistics& s = d.report->statistics;
@@ -179,30 +177,19 @@ std::string verdict_reason(const HtmlReport& report, const NumberStyle& n) {
              n.length_with_units(s.max.value), n.length_with_units(s.min.value));
       continue;
     }
-    const Tolerance& t = s.tolerance->tolerance;
-    std::vector<std::string> parts;
-    if (s.max.value > t.upper) {
-      parts.push_back(fmt::format("max {} above the upper limit {}",
-                                  n.length_with_units(s.max.value), t.upper));
+    append(reason, "{}: {}", title,
+           verdict_reason(s, d.report->distances->certificate, s.tolerance->tolerance, n));
+    if (!d.report->regions.empty()) {
+      append(reason, "; {} regions out of tolerance, {:.2f} % of the area",
+             d.report->regions.size(), 100 * (1 - s.share(s.tolerance->within)));
     }
-    if (s.min.value < t.lower) {
-      parts.push_back(fmt::format("min {} below the lower limit {}",
-                                  n.length_with_units(s.min.value), t.lower));
-    }
-    if (parts.empty()) {
-      append(reason, "{}: all {} samples within [{}, {}] {} (max {}, min {}). ", title, s.samples,
-             t.lower, t.upper, n.units, n.length(s.max.value), n.length(s.min.value));
-    } else {
-      append(reason, "{}: {}; {} regions out of tolerance, {:.2f} % of the area. ", title,
-             fmt::join(parts, ", "), d.report->regions.size(),
-             100 * (1 - s.share(s.tolerance->within)));
-    }
+    reason += ". ";
   }
   return reason;
 }
 
-void write_head(std::string& out, const HtmlReport& report, Verdict verdict) {
-  static constexpr const char* kVerdictWord[] = {"PASS", "FAIL", "no tolerance"};
+void write_head(std::string& out, const HtmlReport& report, Banner verdict) {
+  static constexpr const char* kVerdictWord[] = {"PASS", "FAIL", "INCONCLUSIVE", "no tolerance"};
   append(out,
          "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
          "<meta http-equiv=\"Content-Security-Policy\" content=\"{}\">\n"
@@ -213,15 +200,15 @@ void write_head(std::string& out, const HtmlReport& report, Verdict verdict) {
          kVerdictWord[static_cast<int>(verdict)], report_style_sheet());
 }
 
-void write_banner(std::string& out, const HtmlReport& report, Verdict verdict,
+void write_banner(std::string& out, const HtmlReport& report, Banner verdict,
                   const NumberStyle& n) {
-  static constexpr const char* kClass[] = {"ncv-pass", "ncv-fail", "ncv-none"};
-  static constexpr const char* kHeadline[] = {"PASS \u2014 within tolerance",
-                                              "FAIL \u2014 out of tolerance",
-                                              "No verdict \u2014 no tolerance given"};
+  static constexpr const char* kClass[] = {"ncv-pass", "ncv-fail", "ncv-inconclusive", "ncv-none"};
+  static constexpr const char* kHeadline[] = {
+      "PASS \u2014 proven within tolerance", "FAIL \u2014 out of tolerance",
+      "INCONCLUSIVE \u2014 not proven within tolerance", "No verdict \u2014 no tolerance given"};
   append(out, "<div class=\"ncv-verdict {}\" id=\"ncv-verdict\">{}: {}<small>{}</small></div>\n",
          kClass[static_cast<int>(verdict)], esc(report.part), kHeadline[static_cast<int>(verdict)],
-         esc(verdict_reason(report, n)));
+         esc(banner_reason(report, n)));
 }
 
 void write_facts(std::string& out, const HtmlReport& report) {
@@ -351,7 +338,7 @@ void write_direction(std::string& out, const HtmlDirection& d, std::size_t index
 }  // namespace
 
 std::string html_report(const HtmlReport& report) {
-  const Verdict verdict = overall_verdict(report);
+  const Banner verdict = banner_of(report);
   std::string out;
   write_head(out, report, verdict);
   const NumberStyle numbers = report.directions.empty()
@@ -379,7 +366,7 @@ HtmlReport verification_html_report(const VerificationReport& r, std::span<const
   report.part = main.part;
   report.units = main.units;
   report.trace = r.trace;
-  report.fails = r.fails();
+  report.verdict = r.verdict();
   const HtmlInput sampled{forward ? "workpiece" : "nominal", d.samples.source,
                           hash_hex(d.samples.mesh_hash), d.samples.mesh.triangle_count()};
   const HtmlInput reference{forward ? "nominal" : "workpiece", d.reference.source,

@@ -41,7 +41,7 @@ struct HtmlDirection {
 
 struct HtmlReport {
   std::string part;
-  bool fails = false;  // out of tolerance in some direction
+  std::optional<Verdict> verdict;  // the part's, over every direction; none without a tolerance
   std::string units = "mm";
   Traceability trace;
   std::vector<HtmlInput> inputs;

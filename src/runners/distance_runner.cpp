@@ -75,6 +75,17 @@ void warn_if_swapped(const Mesh& workpiece, const std::string& workpiece_source,
   }
 }
 
+void log_certificate(const Certificate& c, Direction direction, double seconds) {
+  spdlog::info(
+      "{}: certified between samples in {:.3f} s: max in [{:.6g}, {:.6g}], min in [{:.6g}, "
+      "{:.6g}]; {} sub-triangles bounded, {} split, {} points added{}",
+      name_of(kDirectionNames, direction), seconds, c.max.measured, c.max.bound, c.min.bound,
+      c.min.measured, c.patches, c.refined_patches, c.added_points,
+      c.unresolved ? fmt::format(", {} still wider than {:.3g} (refinement cap)", c.unresolved,
+                                 c.width_asked)
+                   : "");
+}
+
 }  // namespace
 
 void refuse_if_apart(const BoundingBox& workpiece, const std::string& workpiece_source,
@@ -140,11 +151,11 @@ DistanceSet measure_distances(SampleSet samples, const IndexedReference& referen
   Progress progress("distance", samples.sample_count());
   const auto report = [&](std::size_t done, std::size_t) { progress.update(done); };
   DistanceSet result;
+  const SearchIndex index(reference);
   if (options.brute_force) {
     result.field =
         compute_signed_distances(surface, samples.positions, normals, method, &statistics, report);
   } else {
-    const SearchIndex index(reference);
     result.field =
         compute_signed_distances(index, samples.positions, normals, method, &statistics, report);
   }
@@ -160,8 +171,15 @@ DistanceSet measure_distances(SampleSet samples, const IndexedReference& referen
       per_query(statistics.triangles_considered), per_query(statistics.triangles_tested),
       name_of(kSignMethodNames, method),
       options.sign == SignMethod::automatic ? "chosen by --sign auto" : "as asked");
-  if (options.direction == Direction::reverse) reverse_sign(result.field.distance);
   if (seconds) *seconds = clock.seconds();
+  if (options.certify) {
+    Stopwatch certify_clock;
+    const Certificate raw =
+        certify_surface(samples, result.field, index, SideRule(surface, method), *options.certify);
+    result.certificate = options.direction == Direction::reverse ? negated(raw) : raw;
+    log_certificate(*result.certificate, options.direction, certify_clock.seconds());
+  }
+  if (options.direction == Direction::reverse) reverse_sign(result.field.distance);
 
   result.direction = options.direction;
   result.samples = std::move(samples);

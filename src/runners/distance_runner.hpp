@@ -3,8 +3,10 @@
 // checking that the two belong together.
 #pragma once
 
+#include <optional>
 #include <string>
 
+#include "certify/certify_surface.hpp"
 #include "distance/direction.hpp"
 #include "files/distance_file.hpp"
 #include "reference/sign_method.hpp"
@@ -19,6 +21,9 @@ struct DistanceOptions {
   // forward: the workpiece's samples against the nominal; reverse: the nominal's samples
   // against the workpiece, signed so that + is still material left (distance/direction.hpp).
   Direction direction = Direction::forward;
+  // Bounds on the error between the samples (docs/CERTIFICATION.md); none: not certified,
+  // and then no verdict can be `pass`.
+  std::optional<CertifyOptions> certify = CertifyOptions{};
 };
 
 // Refuses (InputError naming the workpiece) a workpiece farther from the nominal than the

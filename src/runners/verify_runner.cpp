@@ -113,6 +113,7 @@ DistanceSet measure_direction(Mesh sampled_mesh, const std::string& sampled_sour
   if (hooks.indexed) hooks.indexed(indexed, direction);
   DistanceOptions distance = options.distance;
   distance.direction = direction;
+
   double seconds = 0;
   DistanceSet distances =
       measure_distances(std::move(sampled.samples), indexed.reference, distance, &seconds);

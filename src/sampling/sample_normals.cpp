@@ -2,13 +2,18 @@
 
 namespace ncv {
 
-std::vector<Vec3> sample_normals(const SampleSet& samples) {
-  const Mesh& mesh = samples.mesh;
-  std::vector<Vec3> vertex_normals(mesh.vertex_count(), Vec3(0, 0, 0));
+std::vector<Vec3> vertex_normal_sums(const Mesh& mesh) {
+  std::vector<Vec3> sums(mesh.vertex_count(), Vec3(0, 0, 0));
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     const Vec3 weighted = area_vector(mesh, t);  // |cross| = twice the area
-    for (std::uint32_t v : mesh.triangles[t]) vertex_normals[v] += weighted;
+    for (std::uint32_t v : mesh.triangles[t]) sums[v] += weighted;
   }
+  return sums;
+}
+
+std::vector<Vec3> sample_normals(const SampleSet& samples) {
+  const Mesh& mesh = samples.mesh;
+  const std::vector<Vec3> vertex_normals = vertex_normal_sums(mesh);
   // Per sample held: the samples numbered first .. first + count - 1 of the lattice.
   const std::uint64_t first = samples.first_sample, count = samples.sample_count();
   std::vector<Vec3> normals(count, Vec3(0, 0, 0));

@@ -10,5 +10,7 @@
 namespace ncv {
 
 std::vector<Vec3> sample_normals(const SampleSet& samples);
+// Per mesh vertex: the area-weighted sum of its triangles' normals (not normalised).
+std::vector<Vec3> vertex_normal_sums(const Mesh& mesh);
 
 }  // namespace ncv

@@ -84,18 +84,14 @@ void fill_triangle_samples(SampleSet& set, std::size_t t) {
   const std::uint64_t first = set.first_interior_sample[t];
   const std::uint64_t begin = set.first_sample, end = set.first_sample + set.sample_count();
   if (first >= end || first + lattice_interior_count(n) <= begin) return;
-  const Mesh& mesh = set.mesh;
-  const Vec3 a = mesh.corner(t, 0);
-  const double steps = n - 1;
-  const Vec3 e1 = (mesh.corner(t, 1) - a) / steps;
-  const Vec3 e2 = (mesh.corner(t, 2) - a) / steps;
+  const LatticeFrame frame(set.mesh, t, n);
   std::uint64_t s = first;
   for (std::uint32_t i = 0; i < n; ++i) {
     for (std::uint32_t j = 0; j + i < n; ++j) {
       if (is_corner(i, j, n)) continue;
       if (s >= begin && s < end) {
         const std::uint64_t k = s - begin;
-        set.positions[k] = a + static_cast<double>(i) * e1 + static_cast<double>(j) * e2;
+        set.positions[k] = frame.at(i, j);
         set.owner[k] = static_cast<std::uint32_t>(t);
         set.lattice_i[k] = i;
         set.lattice_j[k] = j;
@@ -106,6 +102,19 @@ void fill_triangle_samples(SampleSet& set, std::size_t t) {
 }
 
 }  // namespace
+
+LatticeFrame::LatticeFrame(const Mesh& mesh, std::size_t t, std::uint32_t n)
+    : a(mesh.corner(t, 0)),
+      e1((mesh.corner(t, 1) - a) / static_cast<double>(n - 1)),
+      e2((mesh.corner(t, 2) - a) / static_cast<double>(n - 1)) {}
+
+Vec3 lattice_point(const Mesh& mesh, std::size_t t, std::uint32_t n, std::uint32_t i,
+                   std::uint32_t j) {
+  if (i == 0 && j == 0) return mesh.corner(t, 0);
+  if (i == n - 1 && j == 0) return mesh.corner(t, 1);
+  if (i == 0 && j == n - 1) return mesh.corner(t, 2);
+  return LatticeFrame(mesh, t, n).at(i, j);
+}
 
 std::uint32_t lattice_size(double area, double step) {
   const double n_prime = std::sqrt(0.25 + 2.0 * area / (step * step)) - 0.5;

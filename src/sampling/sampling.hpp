@@ -74,6 +74,18 @@ struct SampleSet {
   std::uint64_t sample_at(std::size_t t, std::uint32_t i, std::uint32_t j) const;
 };
 
+// Lattice point (i, j) of triangle t with lattice size n >= 2, computed as the sampler does:
+// a corner is its mesh vertex, any other point A + i(B-A)/(n-1) + j(C-A)/(n-1).
+struct LatticeFrame {
+  LatticeFrame(const Mesh& mesh, std::size_t t, std::uint32_t n);
+  Vec3 at(std::uint32_t i, std::uint32_t j) const {
+    return a + static_cast<double>(i) * e1 + static_cast<double>(j) * e2;
+  }
+  Vec3 a, e1, e2;
+};
+Vec3 lattice_point(const Mesh& mesh, std::size_t t, std::uint32_t n, std::uint32_t i,
+                   std::uint32_t j);
+
 struct SamplingReport {
   std::uint64_t triangles = 0;
   std::uint64_t samples = 0;

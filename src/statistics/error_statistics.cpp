@@ -120,8 +120,7 @@ void compute_moments(std::span<const LinearPatch> patches, ErrorStatistics& stat
   stats.std_dev = std::sqrt(integrate(patches, sampled_mean).square / raw.area);
 }
 
-ToleranceAreas clip_to_tolerance(std::span<const LinearPatch> patches, const Tolerance& zone,
-                                 const ErrorStatistics& stats) {
+ToleranceAreas clip_to_tolerance(std::span<const LinearPatch> patches, const Tolerance& zone) {
   ToleranceAreas areas = ordered_reduce(
       patches.size(), kPatchBlock, ToleranceAreas{zone},
       [&](std::size_t begin, std::size_t end) {
@@ -140,7 +139,6 @@ ToleranceAreas clip_to_tolerance(std::span<const LinearPatch> patches, const Tol
         acc.excess += part.excess;
         acc.within += part.within;
       });
-  areas.pass = stats.min.value >= zone.lower && stats.max.value <= zone.upper;
   return areas;
 }
 
@@ -169,7 +167,7 @@ ErrorStatistics compute_error_statistics(const SampleSet& samples, std::span<con
 
   const Buffer<LinearPatch> patches = lattice_patches(samples, d);
   compute_moments(patches, stats);
-  if (tolerance) stats.tolerance = clip_to_tolerance(patches, *tolerance, stats);
+  if (tolerance) stats.tolerance = clip_to_tolerance(patches, *tolerance);
   stats.histogram = area_histogram(
       patches, histogram.range.value_or(ValueRange{stats.min.value, stats.max.value}),
       histogram.bins);

@@ -35,7 +35,6 @@ struct ToleranceAreas {
   double within = 0;  // area where lower <= d <= upper
   double excess = 0;  // area where d > upper
   double gouge = 0;   // area where d < lower
-  bool pass = false;  // d_min >= lower and d_max <= upper
 };
 
 struct ErrorStatistics {

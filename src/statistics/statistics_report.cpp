@@ -53,15 +53,38 @@ nlohmann::json reference_json(const PartReport& r) {
 nlohmann::json tolerance_json(const PartReport& r) {
   const ToleranceAreas& t = *r.statistics.tolerance;
   const ErrorStatistics& s = r.statistics;
-  return {{"lower", t.tolerance.lower},
-          {"upper", t.tolerance.upper},
-          {"area_within", t.within},
-          {"area_excess", t.excess},
-          {"area_gouge", t.gouge},
-          {"share_within", s.share(t.within)},
-          {"share_excess", s.share(t.excess)},
-          {"share_gouge", s.share(t.gouge)},
-          {"verdict", t.pass ? "pass" : "fail"}};
+  return {
+      {"lower", t.tolerance.lower},
+      {"upper", t.tolerance.upper},
+      {"area_within", t.within},
+      {"area_excess", t.excess},
+      {"area_gouge", t.gouge},
+      {"share_within", s.share(t.within)},
+      {"share_excess", s.share(t.excess)},
+      {"share_gouge", s.share(t.gouge)},
+      {"verdict", name_of(kVerdictNames, *r.verdict())},
+      {"reason", verdict_reason(s, r.distances->certificate, t.tolerance, report_number_style(r))}};
+}
+
+nlohmann::json certified_extreme_json(const CertifiedExtreme& e) {
+  return {{"measured", e.measured},
+          {"measured_at", point_json(e.measured_at)},
+          {"bound", e.bound},
+          {"bound_at", point_json(e.bound_at)}};
+}
+
+nlohmann::json certificate_json(const Certificate& c) {
+  return {{"width_asked", c.width_asked},
+          {"max", certified_extreme_json(c.max)},
+          {"min", certified_extreme_json(c.min)},
+          {"max_width", c.max.width()},
+          {"min_width", c.min.width()},
+          {"sub_triangles", c.patches},
+          {"sub_triangles_split", c.refined_patches},
+          {"points_added", c.added_points},
+          {"points_cap", c.points_cap},
+          {"unresolved", c.unresolved},
+          {"sign_proven", c.sign_proven}};
 }
 
 nlohmann::json regions_json(const PartReport& r) {
@@ -83,8 +106,16 @@ void append(fmt::memory_buffer& out, fmt::format_string<Args...> format, Args&&.
   fmt::format_to(std::back_inserter(out), format, std::forward<Args>(args)...);
 }
 
-const char* verdict_word(bool fails) {
-  return fails ? "FAIL" : "PASS";
+const char* verdict_word(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::pass:
+      return "PASS";
+    case Verdict::fail:
+      return "FAIL";
+    case Verdict::inconclusive:
+      break;
+  }
+  return "INCONCLUSIVE";
 }
 
 std::string direction_title(const PartReport& r) {
@@ -146,6 +177,20 @@ void text_errors(const std::vector<const PartReport*>& reports, const NumberStyl
            [&](const PartReport& r) { return number(r.statistics.max.value); });
   text_row(out, "min", reports,
            [&](const PartReport& r) { return number(r.statistics.min.value); });
+  if (std::any_of(reports.begin(), reports.end(),
+                  [](const PartReport* r) { return r->distances->certificate.has_value(); })) {
+    // The certified interval of each extreme: its measured end and its proven bound.
+    const auto interval = [&](const PartReport& r, bool upper) {
+      const std::optional<Certificate>& c = r.distances->certificate;
+      if (!c) return std::string("not certified");
+      return upper
+                 ? fmt::format("<= {} (measured {})", number(c->max.bound), number(c->max.measured))
+                 : fmt::format(">= {} (measured {})", number(c->min.bound),
+                               number(c->min.measured));
+    };
+    text_row(out, "max, proven", reports, [&](const PartReport& r) { return interval(r, true); });
+    text_row(out, "min, proven", reports, [&](const PartReport& r) { return interval(r, false); });
+  }
   text_row(out, "|d| max", reports,
            [&](const PartReport& r) { return number(r.statistics.max_abs.value); });
   text_row(out, "mean", reports, [&](const PartReport& r) { return number(r.statistics.mean); });
@@ -201,7 +246,11 @@ void text_tolerance(const std::vector<const PartReport*>& reports, const NumberS
   text_row(out, "gouge", reports,
            [&](const PartReport& r) { return share(r, &ToleranceAreas::gouge); });
   text_row(out, "verdict", reports,
-           [&](const PartReport& r) { return std::string(verdict_word(r.fails())); });
+           [&](const PartReport& r) { return std::string(verdict_word(*r.verdict())); });
+  for (const PartReport* r : reports) {
+    append(out, "  {}: {}\n", name_of(kDirectionNames, r->distances->direction),
+           verdict_reason(r->statistics, r->distances->certificate, zone->tolerance, n));
+  }
   for (const PartReport* r : reports) text_regions(*r, n, out);
 }
 
@@ -243,6 +292,11 @@ nlohmann::json direction_json(const PartReport& r) {
                         {"std_dev", s.std_dev},
                         {"percentiles", percentiles}}},
                       {"histogram", histogram}};
+  if (d.certificate) {
+    j["error"]["max"]["upper_bound"] = d.certificate->max.bound;
+    j["error"]["min"]["lower_bound"] = d.certificate->min.bound;
+    j["certificate"] = certificate_json(*d.certificate);
+  }
   if (s.tolerance) {
     j["tolerance"] = tolerance_json(r);
     j["regions"] = regions_json(r);
@@ -301,6 +355,17 @@ NumberStyle report_number_style(const PartReport& report) {
   return number_style(bounding_box(report.distances->samples.mesh), report.units);
 }
 
+std::optional<Verdict> PartReport::verdict() const {
+  if (!statistics.tolerance) return std::nullopt;
+  return judge(statistics, distances->certificate, statistics.tolerance->tolerance);
+}
+
+std::optional<Verdict> VerificationReport::verdict() const {
+  const std::optional<Verdict> forward = main.verdict();
+  if (!forward || !reverse) return forward;
+  return worse(*forward, *reverse->verdict());
+}
+
 std::optional<double> VerificationReport::hausdorff() const {
   if (!reverse) return std::nullopt;
   return std::max(main.statistics.max_abs.value, reverse->statistics.max_abs.value);
@@ -312,7 +377,9 @@ nlohmann::json report_json(const VerificationReport& report) {
     j["reverse"] = direction_json(*report.reverse);
     j["hausdorff"] = *report.hausdorff();
   }
-  if (report.main.statistics.tolerance) j["verdict"] = report.fails() ? "fail" : "pass";
+  if (const std::optional<Verdict> verdict = report.verdict()) {
+    j["verdict"] = name_of(kVerdictNames, *verdict);
+  }
   j["units"] = report.main.units;
   j["traceability"] = traceability_json(report);
   return j;
@@ -328,8 +395,8 @@ std::string report_text(const VerificationReport& report) {
     append(out, "  two-sided Hausdorff distance {}\n", numbers.length_with_units(*h));
   }
   text_tolerance(reports, numbers, out);
-  if (report.main.statistics.tolerance) {
-    append(out, "\nverdict     {}\n", verdict_word(report.fails()));
+  if (const std::optional<Verdict> verdict = report.verdict()) {
+    append(out, "\nverdict     {}\n", verdict_word(*verdict));
   }
   return fmt::to_string(out);
 }
@@ -338,6 +405,7 @@ std::string report_csv_header() {
   return "part,workpiece,nominal,triangles,samples,area,d_max,d_min,d_mean,rms,std_dev,max_abs,"
          "p1,p5,p50,p95,p99,tol_lower,tol_upper,area_within,area_excess,area_gouge,"
          "share_within,regions_excess,regions_gouge,reverse_d_max,reverse_d_min,hausdorff,"
+         "max_upper_bound,min_lower_bound,reverse_max_upper_bound,reverse_min_lower_bound,"
          "verdict\n";
 }
 
@@ -368,7 +436,13 @@ std::string report_csv_row(const VerificationReport& report) {
   } else {
     row += ",,,";
   }
-  row += s.tolerance ? (report.fails() ? ",fail" : ",pass") : ",";
+  const auto bounds = [](const PartReport* p) {
+    const std::optional<Certificate>* c = p ? &p->distances->certificate : nullptr;
+    return c && *c ? fmt::format(",{},{}", (*c)->max.bound, (*c)->min.bound) : std::string(",,");
+  };
+  row += bounds(&r) + bounds(report.reverse ? &*report.reverse : nullptr);
+  const std::optional<Verdict> verdict = report.verdict();
+  row += verdict ? fmt::format(",{}", name_of(kVerdictNames, *verdict)) : ",";
   return row + "\n";
 }
 
@@ -413,7 +487,15 @@ std::string format_report(const VerificationReport& report, ReportFormat format,
 }
 
 int verdict_status(const VerificationReport& report) {
-  return report.fails() ? 1 : 0;
+  switch (report.verdict().value_or(Verdict::pass)) {
+    case Verdict::pass:
+      return 0;
+    case Verdict::fail:
+      return 1;
+    case Verdict::inconclusive:
+      break;
+  }
+  return 3;
 }
 
 }  // namespace ncv

@@ -15,6 +15,7 @@
 #include "statistics/error_regions.hpp"
 #include "statistics/error_statistics.hpp"
 #include "statistics/readable_numbers.hpp"
+#include "statistics/verdict.hpp"
 #include "util/enum_names.hpp"
 
 namespace ncv {
@@ -29,8 +30,9 @@ struct PartReport {
   std::size_t listed_regions = 20;           // regions written out (all are counted)
   std::string units = "mm";                  // of lengths; areas are in units²
 
-  // Within the tolerance zone at every sample (false without a tolerance).
-  bool fails() const { return statistics.tolerance && !statistics.tolerance->pass; }
+  // The verdict against the tolerance (statistics/verdict.hpp); none without a tolerance.
+  std::optional<Verdict> verdict() const;
+  bool fails() const { return verdict() == Verdict::fail; }
 };
 
 PartReport make_part_report(const DistanceSet& distances, const std::optional<Tolerance>& tolerance,
@@ -53,7 +55,9 @@ struct VerificationReport {
   std::optional<PartReport> reverse;
   Traceability trace{};
 
-  bool fails() const { return main.fails() || (reverse && reverse->fails()); }
+  // The worse of the directions' verdicts; none without a tolerance.
+  std::optional<Verdict> verdict() const;
+  bool fails() const { return verdict() == Verdict::fail; }
   // The two-sided Hausdorff distance: the larger max |d| of the two directions.
   std::optional<double> hausdorff() const;
 };
@@ -75,7 +79,8 @@ inline constexpr EnumName<ReportFormat> kReportFormatNames[] = {
 std::string format_report(const VerificationReport& report, ReportFormat format,
                           bool csv_header = true);
 
-// The exit status the verdict implies: 0 pass or no tolerance, 1 out of tolerance.
+// The exit status the verdict implies: 0 pass or no tolerance, 1 out of tolerance (fail),
+// 3 inconclusive.
 int verdict_status(const VerificationReport& report);
 
 }  // namespace ncv

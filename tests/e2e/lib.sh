@@ -60,3 +60,18 @@ finish() {
   echo "$passed passed, $failed failed"
   [ "$failed" -eq 0 ]
 }
+
+# A report or summary CSV without the certified bound columns, which a sharded job refines
+# shard by shard (docs/CERTIFICATION.md "Verdict"): what a sharded batch and the whole one
+# share byte for byte.
+csv_without_bounds() {
+  /usr/bin/python3 -c '
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1], newline="")))
+drop = {"max_upper_bound", "min_lower_bound", "reverse_max_upper_bound", "reverse_min_lower_bound"}
+keep = [i for i, name in enumerate(rows[0]) if name not in drop]
+out = csv.writer(sys.stdout, lineterminator="\n")
+for row in rows:
+    out.writerow([row[i] for i in keep if i < len(row)])' "$1"
+}
+same_but_bounds() { cmp <(csv_without_bounds "$1") <(csv_without_bounds "$2"); }

@@ -17,13 +17,18 @@ check "the batch fails: parts out of tolerance, one without nominal" test $? -ne
 check "the same summary as the Makefile's, byte for byte" cmp make/summary.csv results/summary.csv
 check "one task per grid and per part, in GNU parallel's job logs" \
   test "$(tail -n +2 results/batch/log/grids.txt.joblog | wc -l) $(tail -n +2 results/batch/log/parts.txt.joblog | wc -l)" = "1 3"
-check "the counts end its output" grep -q "^summary $WORK/results/summary.csv: 1 pass, 2 fail, 1 error$" run1.log
+# box_scallop's scallops (0.03) are within the zone, but at this coarse step its flat nominal
+# top spans many of the workpiece's curved scallop triangles, and the reverse direction's
+# certified bound stays above 0.15: not proven, inconclusive.
+check "the counts end its output" \
+  grep -q "^summary $WORK/results/summary.csv: 0 pass, 2 fail, 1 inconclusive, 1 error$" run1.log
 "$NCV_SOURCE_DIR/scripts/parallel/verify_parts.sh" -S : parts results "${settings[@]}" >run2.log 2>&1
 check "nothing is redone the second time" test "$(grep -c -- '-q ' run2.log)" -eq 0
 check "and the summary is the same" cmp make/summary.csv results/summary.csv
 "$NCV_SOURCE_DIR/scripts/parallel/verify_parts.sh" -S : parts sharded "${settings[@]}" SHARDS=3 \
   >sharded.log 2>&1
-check "in three shards a part: the same summary, byte for byte" cmp make/summary.csv sharded/summary.csv
+check "in three shards a part: the same summary, byte for byte but for the certified bounds" \
+  same_but_bounds make/summary.csv sharded/summary.csv
 check "a task per shard, and the reverse grids with the grids" \
   test "$(tail -n +2 sharded/batch/log/shards.txt.joblog | wc -l) $(tail -n +2 sharded/batch/log/grids.txt.joblog | wc -l)" = "9 4"
 expect_status 2 "a VARIABLE=value that is not one refuses" \

@@ -11,6 +11,24 @@ size() { stat -c %s "$1"; }
 # A JSON report without what differs from run to run (the date and the command line).
 results() { jq -S 'del(.traceability.date, .traceability.command_line)' "$1"; }
 same_results() { test "$(results "$1")" = "$(results "$2")"; }
+# The same without the certified bounds, which each shard refines towards its own measured
+# extremes (docs/CERTIFICATION.md "Verdict").
+uncertified() {
+  jq -S 'del(.traceability.date, .traceability.command_line, .certificate, .tolerance.reason,
+    .error.max.upper_bound, .error.min.lower_bound)' "$1"
+}
+# The first report's certified intervals hold the second's measured extremes, and are at
+# most the width asked wide.
+bounds_hold() {
+  /usr/bin/python3 -c '
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:])
+c = a["certificate"]
+w = c["width_asked"]
+ok = c["max"]["bound"] >= b["certificate"]["max"]["measured"] and c["min"]["bound"] <= b["certificate"]["min"]["measured"]
+ok = ok and (c["unresolved"] > 0 or (c["max_width"] <= w and c["min_width"] <= w))
+sys.exit(0 if ok else 1)' "$1" "$2"
+}
 samples_of() { "$NCVERIFY" inspect "$1" --json | jq '.meta.records.count // .meta.sampling.samples'; }
 
 # The whole job, file by file.
@@ -34,7 +52,10 @@ done
 total=$(($(samples_of w1.dist) + $(samples_of w2.dist) + $(samples_of w3.dist)))
 check "the shards split the samples ($total of $S)" test "$total" -eq "$S"
 "$NCVERIFY" stats w3.dist w1.dist w2.dist --tol 0.15 --format json -o shards.json
-check "stats of the shards equal the whole job's, to the bit" same_results shards.json whole.json
+check "stats of the shards equal the whole job's, to the bit, but for the certified bounds" \
+  test "$(uncertified shards.json)" = "$(uncertified whole.json)"
+check "the shards' certified bounds hold the whole job's measured extremes" bounds_hold shards.json whole.json
+check "the whole job's certified bounds hold the shards' measured extremes" bounds_hold whole.json shards.json
 "$NCVERIFY" -q colorize w1.dist w2.dist w3.dist -o shards.ply --tol 0.15
 check "the coloured PLY of the shards equals the whole job's" cmp -s shards.ply whole.ply
 expect_bad_input "a shard missing" "shard 2/3 of the forward direction is missing" "" \

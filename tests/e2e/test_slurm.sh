@@ -185,7 +185,10 @@ check "one part task per workpiece with a nominal" \
   test "$(ls "$WORK"/slurm/batch/log/ncverify-part-*.out | wc -l)" -eq 5
 check "the parts out of tolerance fail" \
   test "$(grep -c ',fail,$' "$WORK/slurm/summary.csv")" -eq 3
-check "the part within it passes" grep -q '^"box_scallop",.*,pass,$' "$WORK/slurm/summary.csv"
+# box_scallop's scallops are within the zone, but not proven so at this coarse step (its
+# certified bounds between samples reach beyond 0.15): inconclusive, a row like the others.
+check "the part within it at its samples is inconclusive" \
+  grep -q '^"box_scallop",.*,inconclusive,$' "$WORK/slurm/summary.csv"
 check "a part without a nominal is an error row" \
   grep -q '^"widget_a",.*,error,"no nominal: ' "$WORK/slurm/summary.csv"
 check "a part whose grid task failed is an error row quoting it" \
@@ -200,8 +203,8 @@ check "the part task of a failed grid does not rebuild it" \
 check "submit.sh submits the sharded batch" test $? -eq 0
 state=$(final_state "$(tail -n 1 "$WORK/sharded.log")")
 check "the sharded batch's summary job ran and failed" test "$state" = FAILED
-check "the sharded summary is the Makefile's, byte for byte" \
-  cmp "$WORK/make/summary.csv" "$WORK/sharded/summary.csv"
+check "the sharded summary is the Makefile's, byte for byte but for the certified bounds" \
+  same_but_bounds "$WORK/make/summary.csv" "$WORK/sharded/summary.csv"
 check "one shard task per shard of each workpiece with a nominal" \
   test "$(ls "$WORK"/sharded/batch/log/ncverify-shard-*.out | wc -l)" -eq 10
 check "a grid task per nominal and per workpiece (its reverse grid)" \

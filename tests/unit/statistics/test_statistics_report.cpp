@@ -11,11 +11,24 @@ using namespace ncv;
 
 namespace {
 
-// A 10 × 10 square sampled finely, with d = x / 10 - 0.2: a linear field from -0.2 to 0.8.
+// A certificate whose bounds are the given extremes, as certification proves them for a
+// field that is linear over the surface.
+Certificate certificate_of(double max, double min) {
+  Certificate c;
+  c.width_asked = 0.001;
+  c.max = {max, {0, 0, 0}, max, {0, 0, 0}};
+  c.min = {min, {0, 0, 0}, min, {0, 0, 0}};
+  c.sign_proven = true;
+  return c;
+}
+
+// A 10 × 10 square sampled finely, with d = x / 10 - 0.2: a linear field from -0.2 to 0.8,
+// its extremes certified (a linear field is exactly its samples' interpolant).
 DistanceSet linear_field_part() {
   Mesh square{{{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {10, 10, 0}}, {{0, 1, 2}, {3, 2, 1}}};
   DistanceSet set = test::linear_field_part(std::move(square), 0.5, "parts/plate.stl");
   set.samples.step_spec = "0.5";
+  set.certificate = certificate_of(0.8, -0.2);
   return set;
 }
 
@@ -62,6 +75,38 @@ TEST_CASE("a passing part exits 0, and without a tolerance there is no verdict",
   CHECK_FALSE(report_json(none).contains("verdict"));
 }
 
+TEST_CASE("pass needs certified bounds in the zone; samples alone are inconclusive",
+          "[report][verdict]") {
+  DistanceSet part = linear_field_part();
+  const Tolerance zone{-0.3, 0.9};
+  CHECK(verdict_status({make_part_report(part, zone, {}), {}}) == 0);
+  // Between the samples the error may reach 0.95: not proven, exit status 3.
+  part.certificate->max.bound = 0.95;
+  const VerificationReport unproven{make_part_report(part, zone, {}), {}};
+  CHECK(unproven.verdict() == Verdict::inconclusive);
+  CHECK(verdict_status(unproven) == 3);
+  CHECK(report_json(unproven)["verdict"] == "inconclusive");
+  CHECK(report_json(unproven)["error"]["max"]["upper_bound"].get<double>() == 0.95);
+  CHECK_THAT(report_json(unproven)["tolerance"]["reason"].get<std::string>(),
+             Catch::Contains("may reach 0.95"));
+  CHECK_THAT(report_text(unproven), Catch::EndsWith("verdict     INCONCLUSIVE\n"));
+  // A point refinement measured beyond the zone fails, whatever the samples say.
+  part.certificate->max.measured = 0.93;
+  CHECK(verdict_status({make_part_report(part, zone, {}), {}}) == 1);
+  // Without a certificate nothing bounds the error between samples.
+  part.certificate.reset();
+  const VerificationReport bare{make_part_report(part, zone, {}), {}};
+  CHECK(bare.verdict() == Verdict::inconclusive);
+  CHECK_FALSE(report_json(bare)["error"]["max"].contains("upper_bound"));
+}
+
+TEST_CASE("triangles left unsampled never pass", "[report][verdict]") {
+  DistanceSet part = linear_field_part();
+  PartReport report = make_part_report(part, Tolerance{-0.3, 0.9}, {});
+  report.statistics.triangles_unsampled = 1;
+  CHECK(report.verdict() == Verdict::inconclusive);
+}
+
 TEST_CASE("CSV rows have the header's columns, numbers round-trip", "[report]") {
   const DistanceSet part = linear_field_part();
   for (const std::optional<Tolerance> tolerance :
@@ -104,6 +149,7 @@ DistanceSet reverse_of(const DistanceSet& forward) {
   set.reference = {"parts/plate.stl", 7, 2, {}};
   set.sign_method = "pseudonormal";
   set.search = "grid";
+  set.certificate = certificate_of(0.4, -1.6);
   return set;
 }
 
@@ -138,6 +184,8 @@ TEST_CASE("both directions: the reverse object, the Hausdorff distance, one verd
   CHECK(std::stod(column("reverse_d_min")) == report.reverse->statistics.min.value);
   CHECK(std::stod(column("reverse_d_max")) == report.reverse->statistics.max.value);
   CHECK(std::stod(column("hausdorff")) == *report.hausdorff());
+  CHECK(std::stod(column("max_upper_bound")) == 0.8);
+  CHECK(std::stod(column("reverse_min_lower_bound")) == -1.6);
   const std::string text = report_text(report);
   CHECK_THAT(text, Catch::Contains("reverse (nominal samples)"));
   CHECK_THAT(text, Catch::Contains("two-sided Hausdorff distance"));

@@ -1,0 +1,440 @@
+#include "certify/certify_surface.hpp"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "certify/patch_bounds.hpp"
+#include "sampling/lattice_triangles.hpp"
+#include "sampling/sample_normals.hpp"
+#include "search/closest_point_search.hpp"
+#include "util/ordered_reduce.hpp"
+
+namespace ncv {
+namespace {
+
+// Splitting halves a patch's edges; past this depth a patch is 2^-30 of its lattice
+// sub-triangle, about the rounding slack of the coordinates, and splitting says no more.
+constexpr std::uint32_t kMaxDepth = 30;
+constexpr std::size_t kTriangleBlock = 1024;
+constexpr std::size_t kPatchBlock = 256;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// The rounding slack of distances computed on coordinates of magnitude `scale`: the search's
+// margin (closest_point_search.hpp), docs/CERTIFICATION.md "Rounding".
+double rounding_slack(double scale) {
+  return std::ldexp(scale, -30);
+}
+
+// The measured extremes, the earlier one kept on a tie.
+struct Extremes {
+  double max = -kInfinity, min = kInfinity;
+  Vec3 max_at{0, 0, 0}, min_at{0, 0, 0};
+
+  void add(double d, Vec3 at) {
+    if (d > max) {
+      max = d;
+      max_at = at;
+    }
+    if (d < min) {
+      min = d;
+      min_at = at;
+    }
+  }
+  void add(const Extremes& e) {
+    if (e.max > max) add(e.max, e.max_at);
+    if (e.min < min) add(e.min, e.min_at);
+  }
+};
+
+// The patches' bounds folded, the earlier one kept on a tie.
+struct BoundFold {
+  double upper = -kInfinity, lower = kInfinity;
+  Vec3 upper_at{0, 0, 0}, lower_at{0, 0, 0};
+  std::uint64_t patches = 0, unresolved = 0;
+
+  void add(double up, Vec3 up_at, double low, Vec3 low_at) {
+    if (up > upper) {
+      upper = up;
+      upper_at = up_at;
+    }
+    if (low < lower) {
+      lower = low;
+      lower_at = low_at;
+    }
+  }
+  void add(const Patch& patch, bool open, Vec3 origin) {
+    const Vec3 centre = patch.centre() + origin;
+    add(patch.upper(), centre, patch.lower(), centre);
+    unresolved += open ? 1 : 0;
+  }
+  void add(const BoundFold& f) {
+    add(f.upper, f.upper_at, f.lower, f.lower_at);
+    patches += f.patches;
+    unresolved += f.unresolved;
+  }
+};
+
+// A point's signed distance to the reference, as the distance step measures a sample.
+class PointProbe {
+ public:
+  PointProbe(const SearchIndex& index, const SideRule& side) : search_(index), side_(side) {}
+  PatchCorner measure(Vec3 local, Vec3 normal) {
+    const ClosestHit hit = search_.closest(local, counters_);
+    return {local, side_.signed_value(local, hit, normal), hit.triangle};
+  }
+
+ private:
+  GridSearcher search_;
+  const SideRule& side_;
+  SearchCounters counters_;
+};
+
+class Certifier {
+ public:
+  Certifier(const SampleSet& samples, const DistanceField& raw, const SearchIndex& index,
+            const SideRule& side, const CertifyOptions& options)
+      : samples_(samples),
+        raw_(raw),
+        index_(index),
+        side_(side),
+        options_(options),
+        width_(options.width.value_or(kDefaultCertifyWidth)),
+        surface_(index.surface()),
+        continuous_(side.method() == SignMethod::pseudonormal &&
+                    index.surface().automatic_sign_method() == SignMethod::pseudonormal),
+        probes_([this] { return PointProbe(index_, side_); }),
+        nearby_([this] { return NearbyTriangles(index_); }) {
+    if (side.method() == SignMethod::paper) vertex_normals_ = vertex_normal_sums(samples.mesh);
+    BoundingBox box = bounding_box(samples.mesh);
+    const double scale =
+        std::max({max_abs(surface_.to_local(box.min)), max_abs(surface_.to_local(box.max)),
+                  max_abs(surface_.local_bounds().min), max_abs(surface_.local_bounds().max)});
+    slack_ = rounding_slack(scale);
+    cap_ = options.points_cap ? options.points_cap
+                              : std::max<std::uint64_t>(kLeastPointsCap, samples.total_samples);
+  }
+
+  Certificate run() {
+    find_covered_triangles();
+    measure_missing_corners();
+    measured_ = held_extremes();
+    for (const auto& [sample, corner] : extra_) measured_.add(corner.d, global(corner.point));
+    std::vector<Patch> open = bound_lattice();
+    refine(std::move(open));
+    return certificate();
+  }
+
+ private:
+  Vec3 global(Vec3 local) const { return local + surface_.origin(); }
+  bool is_held(std::uint64_t s) const {
+    return s >= samples_.first_sample && s - samples_.first_sample < samples_.sample_count();
+  }
+  bool is_open(const Patch& p) const {
+    return p.upper() > measured_.max + width_ || p.lower() < measured_.min - width_;
+  }
+
+  // The sampled triangles whose anchor sample this set holds.
+  void find_covered_triangles() {
+    const Mesh& mesh = samples_.mesh;
+    for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+      const std::uint32_t n = samples_.lattice_sizes[t];
+      if (n < 2) continue;
+      const std::uint64_t anchor =
+          n >= 3 ? samples_.first_interior_sample[t] : samples_.vertex_sample[mesh.triangles[t][0]];
+      if (is_held(anchor)) covered_.push_back(static_cast<std::uint32_t>(t));
+    }
+  }
+
+  Vec3 sample_normal(std::size_t t, std::uint32_t i, std::uint32_t j) const {
+    const Mesh& mesh = samples_.mesh;
+    const std::uint32_t n = samples_.lattice_sizes[t];
+    if (vertex_normals_.empty()) return Vec3(0, 0, 0);
+    if (i == 0 && j == 0) return normalized(vertex_normals_[mesh.triangles[t][0]]);
+    if (i == n - 1 && j == 0) return normalized(vertex_normals_[mesh.triangles[t][1]]);
+    if (i == 0 && j == n - 1) return normalized(vertex_normals_[mesh.triangles[t][2]]);
+    return normalized(area_vector(mesh, t));
+  }
+
+  // Corners of covered triangles that another shard holds: measured again here.
+  void measure_missing_corners() {
+    if (samples_.whole()) return;
+    struct Missing {
+      std::uint64_t sample;
+      std::uint32_t t, i, j;
+    };
+    std::vector<Missing> missing;
+    for (const std::uint32_t t : covered_) {
+      const std::uint32_t n = samples_.lattice_sizes[t];
+      for (std::uint32_t i = 0; i < n; ++i) {
+        for (std::uint32_t j = 0; i + j < n; ++j) {
+          const std::uint64_t s = samples_.sample_at(t, i, j);
+          if (!is_held(s)) missing.push_back({s, t, i, j});
+        }
+      }
+    }
+    std::sort(missing.begin(), missing.end(),
+              [](const Missing& a, const Missing& b) { return a.sample < b.sample; });
+    missing.erase(
+        std::unique(missing.begin(), missing.end(),
+                    [](const Missing& a, const Missing& b) { return a.sample == b.sample; }),
+        missing.end());
+    extra_.resize(missing.size());
+    tbb::parallel_for(std::size_t{0}, missing.size(), [&](std::size_t k) {
+      const Missing& m = missing[k];
+      const Vec3 p = lattice_point(samples_.mesh, m.t, samples_.lattice_sizes[m.t], m.i, m.j);
+      extra_[k] = {m.sample,
+                   probes_.local().measure(surface_.to_local(p), sample_normal(m.t, m.i, m.j))};
+    });
+  }
+
+  PatchCorner corner(std::uint64_t s) const {
+    if (is_held(s)) {
+      const std::size_t k = s - samples_.first_sample;
+      return {surface_.to_local(samples_.positions[k]), raw_.distance[k], raw_.closest_face[k]};
+    }
+    const auto it = std::lower_bound(extra_.begin(), extra_.end(), s,
+                                     [](const std::pair<std::uint64_t, PatchCorner>& e,
+                                        std::uint64_t v) { return e.first < v; });
+    return it->second;
+  }
+
+  Extremes held_extremes() const {
+    return ordered_reduce(
+        samples_.sample_count(), 1 << 16, Extremes{},
+        [&](std::size_t begin, std::size_t end) {
+          Extremes e;
+          for (std::size_t k = begin; k < end; ++k) e.add(raw_.distance[k], samples_.positions[k]);
+          return e;
+        },
+        [](Extremes& into, const Extremes& part) { into.add(part); });
+  }
+
+  struct LatticePass {
+    BoundFold fold;
+    std::vector<Patch> open;
+  };
+
+  // A sample's signed distance and closest face, wherever it is held.
+  std::pair<double, std::uint32_t> value(std::uint64_t s) const {
+    if (is_held(s)) {
+      const std::size_t k = s - samples_.first_sample;
+      return {raw_.distance[k], raw_.closest_face[k]};
+    }
+    const PatchCorner c = corner(s);
+    return {c.d, c.face};
+  }
+
+  // The cheap bounds of a lattice patch from its corners' values alone, without building it:
+  // corners that share their closest triangle bound |d| by their largest |d| (convexity),
+  // others by that plus the covering radius (Lipschitz); the covering radius scaled to the
+  // lattice (sub-triangles are similar to their triangle) also gives the Lipschitz side.
+  // A patch these leave open is bounded again with the convexity bound over the corners'
+  // closest triangles (bound_from_corners).
+  void bound_cheaply(std::uint64_t a, std::uint64_t b, std::uint64_t c, double cover, double& upper,
+                     double& lower) const {
+    const auto [da, fa] = value(a);
+    const auto [db, fb] = value(b);
+    const auto [dc, fc] = value(c);
+    const double largest = std::max({std::fabs(da), std::fabs(db), std::fabs(dc)});
+    const double upper_abs = (fa == fb && fb == fc ? largest : largest + cover) + slack_;
+    const double least = std::min({std::fabs(da), std::fabs(db), std::fabs(dc)});
+    const bool same_side = (da > 0 && db > 0 && dc > 0) || (da < 0 && db < 0 && dc < 0);
+    if (continuous_ && same_side && least > cover) {
+      upper = da > 0 ? upper_abs : -(least - cover);
+      lower = da > 0 ? least - cover : -upper_abs;
+    } else {
+      upper = upper_abs;
+      lower = -upper_abs;
+    }
+  }
+
+  Vec3 global_centre(std::uint64_t a, std::uint64_t b, std::uint64_t c) const {
+    return global((corner(a).point + corner(b).point + corner(c).point) / 3.0);
+  }
+
+  // Every lattice sub-triangle of the covered triangles bounded from its corners; the open
+  // ones are returned, in lattice order.
+  std::vector<Patch> bound_lattice() {
+    const auto reference = index_.triangles();
+    const Mesh& mesh = samples_.mesh;
+    LatticePass pass = ordered_reduce(
+        covered_.size(), kTriangleBlock, LatticePass{},
+        [&](std::size_t begin, std::size_t end) {
+          LatticePass part;
+          for (std::size_t k = begin; k < end; ++k) {
+            const std::uint32_t t = covered_[k];
+            const double steps = samples_.lattice_sizes[t] - 1;
+            const double cover =
+                covering_radius(mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2)) / steps *
+                    (1 + 1e-12) +
+                slack_;
+            for_each_lattice_triangle(
+                samples_, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+                  ++part.fold.patches;
+                  double upper = 0, lower = 0;
+                  bound_cheaply(a, b, c, cover, upper, lower);
+                  if (!(upper > measured_.max + width_ || lower < measured_.min - width_)) {
+                    // Where only rarely a new extreme: its place is worked out then.
+                    if (upper > part.fold.upper || lower < part.fold.lower) {
+                      const Vec3 centre = global_centre(a, b, c);
+                      part.fold.add(upper, centre, lower, centre);
+                    }
+                    return;
+                  }
+                  Patch patch;
+                  patch.corners = {corner(a), corner(b), corner(c)};
+                  patch.triangle = t;
+                  bound_from_corners(patch, reference, slack_, continuous_);
+                  if (is_open(patch)) {
+                    part.open.push_back(patch);
+                  } else {
+                    part.fold.add(patch, false, surface_.origin());
+                  }
+                });
+          }
+          return part;
+        },
+        [](LatticePass& into, const LatticePass& part) {
+          into.fold.add(part.fold);
+          into.open.insert(into.open.end(), part.open.begin(), part.open.end());
+        });
+    fold_ = pass.fold;
+    return std::move(pass.open);
+  }
+
+  // How far a patch's bounds lie beyond the measured extremes and the width asked.
+  double excess(const Patch& p) const {
+    return std::max(p.upper() - (measured_.max + width_), (measured_.min - width_) - p.lower());
+  }
+
+  // Round by round: bound the open patches by their nearby triangles, then split the worst
+  // quarter of those still open (the worst first while the cap lasts, so that the points go
+  // where the bounds are loosest), measure the new midpoints, and keep the children and the
+  // patches not split yet that are still open. Each round's choice depends on the values
+  // only, never on the threads.
+  void refine(std::vector<Patch> open) {
+    while (!open.empty()) {
+      tbb::parallel_for(std::size_t{0}, open.size(), [&](std::size_t k) {
+        if (!open[k].near_checked) {
+          bound_by_nearby(open[k], nearby_.local(), width_, slack_, continuous_);
+        }
+      });
+      std::vector<Patch> waiting;
+      for (const Patch& p : open) {
+        if (is_open(p) && p.depth < kMaxDepth) {
+          waiting.push_back(p);
+        } else {
+          fold_.add(p, is_open(p), surface_.origin());
+        }
+      }
+      const std::uint64_t budget = (cap_ - added_) / 3;
+      if (waiting.empty() || budget == 0) {
+        for (const Patch& p : waiting) fold_.add(p, true, surface_.origin());
+        return;
+      }
+      std::stable_sort(waiting.begin(), waiting.end(),
+                       [&](const Patch& x, const Patch& y) { return excess(x) > excess(y); });
+      const std::size_t take = static_cast<std::size_t>(
+          std::min<std::uint64_t>(budget, std::max<std::size_t>(waiting.size() / 4, 1)));
+      const std::vector<Patch> worst(waiting.begin(),
+                                     waiting.begin() + static_cast<std::ptrdiff_t>(take));
+      std::vector<Patch> children = split(worst);
+      splits_ += take;
+      added_ += 3 * take;
+      open.assign(waiting.begin() + static_cast<std::ptrdiff_t>(take), waiting.end());
+      for (const Patch& child : children) {
+        if (is_open(child)) {
+          open.push_back(child);
+        } else {
+          fold_.add(child, false, surface_.origin());
+        }
+      }
+    }
+  }
+
+  // Each patch into four at its edge midpoints; the midpoints measured, added to the measured
+  // extremes in order.
+  std::vector<Patch> split(const std::vector<Patch>& parents) {
+    std::vector<Patch> children(4 * parents.size());
+    const auto reference = index_.triangles();
+    tbb::parallel_for(std::size_t{0}, parents.size(), [&](std::size_t k) {
+      const Patch& p = parents[k];
+      const Vec3 normal = vertex_normals_.empty()
+                              ? Vec3(0, 0, 0)
+                              : normalized(area_vector(samples_.mesh, p.triangle));
+      PointProbe& probe = probes_.local();
+      const auto& c = p.corners;
+      const PatchCorner ab = probe.measure(0.5 * (c[0].point + c[1].point), normal);
+      const PatchCorner bc = probe.measure(0.5 * (c[1].point + c[2].point), normal);
+      const PatchCorner ca = probe.measure(0.5 * (c[2].point + c[0].point), normal);
+      const std::array<std::array<PatchCorner, 3>, 4> quads = {
+          {{c[0], ab, ca}, {ab, c[1], bc}, {ca, bc, c[2]}, {ab, bc, ca}}};
+      for (int q = 0; q < 4; ++q) {
+        Patch& child = children[4 * k + q];
+        child.corners = quads[q];
+        child.triangle = p.triangle;
+        child.depth = p.depth + 1;
+        bound_from_corners(child, reference, slack_, continuous_);
+      }
+    });
+    for (std::size_t k = 0; k < parents.size(); ++k) {
+      // The midpoints are the corners the children do not share with their parent.
+      const Patch& middle = children[4 * k + 3];
+      for (const PatchCorner& m : middle.corners) measured_.add(m.d, global(m.point));
+    }
+    return children;
+  }
+
+  Certificate certificate() const {
+    Certificate c;
+    c.width_asked = width_;
+    c.points_cap = cap_;
+    c.max = {measured_.max, measured_.max_at, std::max(fold_.upper, measured_.max),
+             fold_.upper > measured_.max ? fold_.upper_at : measured_.max_at};
+    c.min = {measured_.min, measured_.min_at, std::min(fold_.lower, measured_.min),
+             fold_.lower < measured_.min ? fold_.lower_at : measured_.min_at};
+    c.patches = fold_.patches;
+    c.refined_patches = splits_;
+    c.added_points = added_;
+    c.unresolved = fold_.unresolved;
+    c.sign_proven = continuous_;
+    c.first_anchor = samples_.first_sample;
+    c.end_anchor = samples_.first_sample + samples_.sample_count();
+    return c;
+  }
+
+  const SampleSet& samples_;
+  const DistanceField& raw_;
+  const SearchIndex& index_;
+  const SideRule& side_;
+  const CertifyOptions& options_;
+  const double width_;
+  const ReferenceSurface& surface_;
+  const bool continuous_;
+  tbb::enumerable_thread_specific<PointProbe> probes_;
+  tbb::enumerable_thread_specific<NearbyTriangles> nearby_;
+  std::vector<Vec3> vertex_normals_;
+  double slack_ = 0;
+  std::uint64_t cap_ = 0;
+  std::vector<std::uint32_t> covered_;
+  std::vector<std::pair<std::uint64_t, PatchCorner>> extra_;
+  Extremes measured_;
+  BoundFold fold_;
+  std::uint64_t splits_ = 0, added_ = 0;
+};
+
+}  // namespace
+
+Certificate certify_surface(const SampleSet& samples, const DistanceField& raw,
+                            const SearchIndex& index, const SideRule& side,
+                            const CertifyOptions& options) {
+  return Certifier(samples, raw, index, side, options).run();
+}
+
+}  // namespace ncv

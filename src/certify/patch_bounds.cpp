@@ -1,0 +1,283 @@
+#include "certify/patch_bounds.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <tuple>
+#include <vector>
+
+#include "geometry/triangle_distance.hpp"
+
+namespace ncv {
+namespace {
+
+// Cells a patch's surroundings may span before bound_by_nearby gives up on them: a patch that
+// far from the reference has its side proven by the Lipschitz bound already, so only the
+// lower bound on |d| would be lost, which the patch's splitting then provides.
+constexpr std::uint64_t kMaxNearbyCells = 512;
+// Triangles a covering may take: a patch over more is split first (its cost stays small).
+constexpr std::size_t kMaxCoveringTriangles = 256;
+// Nearby triangles tried one by one by convexity.
+constexpr std::size_t kMaxSingleCandidates = 32;
+// Reference triangles within this many rounding slacks of a plane count as lying in it: the
+// float coordinates of a flat CAD face that is not axis-aligned stray that little from its
+// plane; the bound grows by the actual deviation.
+constexpr double kFlatTolerance = 1024;
+
+int side_of(double d) {
+  return d > 0 ? 1 : d < 0 ? -1 : 0;
+}
+
+// The corners' common side, or 0 when they differ or one lies on the surface.
+int common_side(const Patch& patch) {
+  const int s = side_of(patch.corners[0].d);
+  for (const PatchCorner& c : patch.corners) {
+    if (side_of(c.d) != s) return 0;
+  }
+  return s;
+}
+
+// Convexity: min over the corners' closest triangles t of max over corners of dist(c, t).
+double convex_upper_abs(const Patch& patch, std::span<const TriangleCorners> reference) {
+  const auto& c = patch.corners;
+  if (c[0].face == c[1].face && c[1].face == c[2].face) {
+    return std::max({std::fabs(c[0].d), std::fabs(c[1].d), std::fabs(c[2].d)});
+  }
+  double best = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    const std::uint32_t t = c[k].face;
+    if ((k > 0 && t == c[0].face) || (k > 1 && t == c[1].face)) continue;  // seen
+    double largest = 0;
+    for (int m = 0; m < 3 && largest < best; ++m) {
+      const double distance =
+          c[m].face == t
+              ? std::fabs(c[m].d)
+              : std::sqrt(closest_point_on_triangle(c[m].point, reference[t]).squared_distance);
+      largest = std::max(largest, distance);
+    }
+    best = std::min(best, largest);
+  }
+  return best;
+}
+
+}  // namespace
+
+double covering_radius(Vec3 a, Vec3 b, Vec3 c) {
+  const double ab = squared_norm(b - a), bc = squared_norm(c - b), ca = squared_norm(a - c);
+  const double longest = std::max({ab, bc, ca});
+  // Acute: each squared edge is less than the sum of the other two.
+  const bool acute = ab < bc + ca && bc < ca + ab && ca < ab + bc;
+  const double twice_area = norm(cross(b - a, c - a));
+  if (!acute || !(twice_area > 0)) return 0.5 * std::sqrt(longest);
+  const double circumradius = std::sqrt(ab * bc * ca) / (2 * twice_area);
+  // Rounding can only make an almost-right triangle look acute; the circumradius is then
+  // half its longest edge to within rounding, and the larger of the two is safe.
+  return std::max(circumradius, 0.5 * std::sqrt(longest));
+}
+
+void bound_from_corners(Patch& patch, std::span<const TriangleCorners> reference, double slack,
+                        bool side_is_continuous) {
+  const auto& c = patch.corners;
+  patch.upper_abs = convex_upper_abs(patch, reference) + slack;
+  patch.side = 0;
+  patch.lower_abs = 0;
+  if (!side_is_continuous) return;
+  const int side = common_side(patch);
+  if (side == 0) return;
+  const double h = covering_radius(c[0].point, c[1].point, c[2].point) * (1 + 1e-12) + slack;
+  const double least = std::min({std::fabs(c[0].d), std::fabs(c[1].d), std::fabs(c[2].d)});
+  if (least > h) {
+    patch.side = side;
+    patch.lower_abs = least - h;
+  }
+}
+
+namespace {
+
+// Convexity with one reference triangle: |d| <= max over the corners of dist(c, t).
+double farthest_corner_distance(const Patch& patch, const TriangleCorners& t) {
+  double farthest = 0;
+  for (const PatchCorner& c : patch.corners) {
+    farthest = std::max(farthest, closest_point_on_triangle(c.point, t).squared_distance);
+  }
+  return std::sqrt(farthest);
+}
+
+// Whether the point lies inside triangle abc, all three in one plane with normal n, by more
+// than rounding: each corner on the inner side of the opposite edge.
+bool strictly_inside(Vec3 p, Vec3 a, Vec3 b, Vec3 c, Vec3 n) {
+  const double s1 = dot(n, cross(b - a, p - a)), s2 = dot(n, cross(c - b, p - b)),
+               s3 = dot(n, cross(a - c, p - c));
+  return (s1 > 0 && s2 > 0 && s3 > 0) || (s1 < 0 && s2 < 0 && s3 < 0);
+}
+
+// The reference triangles near a patch that lie within `cutoff` of its plane, seen from that
+// plane, cover the patch (shrunk towards its centre by `margin`): then every point of the
+// patch has a point of one of them straight above or below it, at most their greatest
+// height away, plus the shrinking's rim (docs/CERTIFICATION.md "Covering triangles"). This
+// bounds a patch over many small reference triangles: a flat face tessellated finely, the
+// diagonal between two coplanar triangles, a scallop surface. The triangles cover the
+// shrunk patch when a point of it lies inside one of them and no edge of their union's outline
+// comes near it: an edge met by one of them only, by more than two, or by two that fold
+// onto the same side; the shrunk patch, being connected, cannot leave the union without
+// crossing the outline.
+std::optional<double> covering_bound(const Patch& patch, NearbyTriangles& nearby, Vec3 n, Vec3 o,
+                                     double cutoff, double margin, double slack) {
+  const auto& c = patch.corners;
+  if (n == Vec3(0, 0, 0)) return std::nullopt;
+  const auto height = [&](Vec3 p) { return dot(n, p - o); };
+  double patch_height = 0;
+  for (const PatchCorner& corner : c)
+    patch_height = std::max(patch_height, std::fabs(height(corner.point)));
+  const auto onto_plane = [&](Vec3 p) { return p - height(p) * n; };
+  const std::span<const TriangleCorners> reference = nearby.triangles();
+  // Gathered farther than the cutoff and the patch's height: an edge that is only on the
+  // outline because its other triangle was not gathered lies farther than that from the
+  // patch, so with both ends within the cutoff of the plane, its shadow stays clear of the
+  // patch's.
+  std::vector<std::uint32_t> cover;
+  double highest = 0;
+  if (!nearby.for_each(patch, 2 * cutoff + patch_height + slack, kMaxNearbyCells,
+                       [&](std::uint32_t t) {
+                         double h = 0;
+                         for (const Vec3& v : reference[t]) h = std::max(h, std::fabs(height(v)));
+                         if (h <= cutoff) {
+                           cover.push_back(t);
+                           highest = std::max(highest, h);
+                         }
+                       }) ||
+      cover.empty() || cover.size() > kMaxCoveringTriangles) {
+    return std::nullopt;
+  }
+  const Vec3 centre = patch.centre();
+  double radius = 0;
+  for (const PatchCorner& corner : c) radius = std::max(radius, norm(corner.point - centre));
+  const double shrink = radius > margin ? margin / radius : 1.0;
+  const double rim = shrink * radius * (1 + 1e-12);
+  TriangleCorners shrunk;
+  for (int k = 0; k < 3; ++k) {
+    shrunk[k] = onto_plane(centre + (1 - shrink) * (c[k].point - centre));
+  }
+  const Vec3 middle = (shrunk[0] + shrunk[1] + shrunk[2]) / 3.0;
+  // A point of the shrunk patch inside one of them: its centre, or one between the centre and a
+  // corner when the centre lies on an edge (lattices and meshes often share their grid lines).
+  const std::array<Vec3, 4> probes = {middle, 0.5 * (middle + shrunk[0]),
+                                      0.5 * (middle + shrunk[1]), 0.5 * (middle + shrunk[2])};
+  const bool some_inside = std::any_of(probes.begin(), probes.end(), [&](Vec3 probe) {
+    return std::any_of(cover.begin(), cover.end(), [&](std::uint32_t t) {
+      const TriangleCorners& r = reference[t];
+      return strictly_inside(probe, onto_plane(r[0]), onto_plane(r[1]), onto_plane(r[2]), n);
+    });
+  });
+  if (!some_inside) return std::nullopt;
+  // Every edge by its end points in order, with the apex of its triangle.
+  struct Edge {
+    std::array<double, 6> ends;
+    Vec3 apex;
+  };
+  std::vector<Edge> edges;
+  for (const std::uint32_t t : cover) {
+    for (int k = 0; k < 3; ++k) {
+      Vec3 p = reference[t][k], q = reference[t][(k + 1) % 3];
+      if (std::tie(q[0], q[1], q[2]) < std::tie(p[0], p[1], p[2])) std::swap(p, q);
+      edges.push_back({{p[0], p[1], p[2], q[0], q[1], q[2]}, reference[t][(k + 2) % 3]});
+    }
+  }
+  std::sort(edges.begin(), edges.end(),
+            [](const Edge& x, const Edge& y) { return x.ends < y.ends; });
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j].ends == edges[i].ends) ++j;
+    const auto& e = edges[i].ends;
+    const Vec3 p = onto_plane(Vec3(e[0], e[1], e[2])), q = onto_plane(Vec3(e[3], e[4], e[5]));
+    bool inner = j - i == 2;
+    if (inner) {
+      const double side_a = dot(n, cross(q - p, onto_plane(edges[i].apex) - p));
+      const double side_b = dot(n, cross(q - p, onto_plane(edges[i + 1].apex) - p));
+      inner = side_a * side_b < 0;
+    }
+    if (!inner && !(triangle_distance_lower_bound({p, q, q}, shrunk, slack) > slack)) {
+      return std::nullopt;
+    }
+    i = j;
+  }
+  return patch_height + highest + rim;
+}
+
+// The least upper bound on |d| the triangles near the patch give: one triangle by
+// convexity, or the triangles that cover it.
+double nearby_upper_abs(const Patch& patch, NearbyTriangles& nearby, double width, double slack) {
+  const std::span<const TriangleCorners> reference = nearby.triangles();
+  double largest = 0;
+  for (const PatchCorner& c : patch.corners) largest = std::max(largest, std::fabs(c.d));
+  // A triangle much farther than the corners from the surface would not bound |d| much below
+  // their largest |d| anyway.
+  const Vec3 a = patch.corners[0].point, b = patch.corners[1].point, c = patch.corners[2].point;
+  const double reach = largest + 0.25 * covering_radius(a, b, c) + 8 * slack;
+  double best = patch.upper_abs;
+  std::vector<std::uint32_t> near;
+  nearby.for_each(patch, reach, kMaxNearbyCells, [&](std::uint32_t t) { near.push_back(t); });
+  // Among many small triangles none is near all three corners: the covering below is for that.
+  if (near.size() <= kMaxSingleCandidates) {
+    for (const std::uint32_t t : near) {
+      best = std::min(best, farthest_corner_distance(patch, reference[t]));
+    }
+  }
+  // Covering triangles as high as twice the corners' |d| (a scallop's crest between corners
+  // in its troughs) and a little more, so that a patch on a face it coincides with is covered.
+  // Seen from the patch's own plane (many small triangles under it), or from the plane of a
+  // corner's closest triangle (a flat face it coincides with or hovers over).
+  std::vector<std::pair<Vec3, Vec3>> planes = {{normalized(cross(b - a, c - a)), a}};
+  std::vector<double> cutoffs = {2 * largest + width};
+  for (int k = 0; k < 3; ++k) {
+    const std::uint32_t face = patch.corners[k].face;
+    if ((k > 0 && face == patch.corners[0].face) || (k > 1 && face == patch.corners[1].face)) {
+      continue;
+    }
+    const TriangleCorners& base = reference[face];
+    planes.push_back({normalized(cross(base[1] - base[0], base[2] - base[0])), base[0]});
+    cutoffs.push_back(kFlatTolerance * slack);
+  }
+  for (std::size_t k = 0; k < planes.size() && best > largest + width; ++k) {
+    if (const std::optional<double> covered = covering_bound(
+            patch, nearby, planes[k].first, planes[k].second, cutoffs[k], 0.25 * width, slack)) {
+      best = std::min(best, *covered);
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+void bound_by_nearby(Patch& patch, NearbyTriangles& nearby, double width, double slack,
+                     bool side_is_continuous) {
+  patch.near_checked = true;
+  patch.upper_abs =
+      std::min(patch.upper_abs, nearby_upper_abs(patch, nearby, width, slack) + slack);
+  const int side = side_is_continuous ? common_side(patch) : 0;
+  if (side == 0) return;  // the corners already show that the error changes sign or is 0
+  const TriangleCorners corners = {patch.corners[0].point, patch.corners[1].point,
+                                   patch.corners[2].point};
+  const std::span<const TriangleCorners> reference = nearby.triangles();
+  // Triangles farther than upper_abs cannot be the nearest to any point of the patch.
+  const double reach = patch.upper_abs;
+  double least = reach;
+  BoundingBox box;
+  for (const Vec3& p : corners) box.extend(p);
+  const bool scanned = nearby.for_each(patch, reach, kMaxNearbyCells, [&](std::uint32_t t) {
+    if (least <= 0) return;
+    BoundingBox triangle_box;
+    for (const Vec3& p : reference[t]) triangle_box.extend(p);
+    if (box_gap(box, triangle_box) >= least) return;
+    least = std::min(least, triangle_distance_lower_bound(corners, reference[t], slack));
+  });
+  if (!scanned || !(least > 0)) return;
+  patch.side = side;
+  patch.lower_abs = std::max(patch.lower_abs, least);
+}
+
+NearbyTriangles::NearbyTriangles(const SearchIndex& index)
+    : index_(index), stamps_(index.triangles().size(), 0) {}
+
+}  // namespace ncv

@@ -1,0 +1,129 @@
+// Bounds on the signed error over one lattice sub-triangle (a "patch"), from its three
+// measured corners (docs/CERTIFICATION.md):
+//  - |d| from above by convexity: the distance to one fixed reference triangle is convex, so
+//    over the patch it is at most its largest value at the corners; the least such maximum
+//    over the corners' closest triangles bounds |d| (it is the measured max |d| when the
+//    corners share their closest triangle).
+//  - the side from the 1-Lipschitz distance: a patch every point of which lies within h
+//    of a corner (h the covering radius) whose corners are all farther than h from the
+//    reference does not touch it, so its side cannot change inside; then |d| >= min |d_c| - h.
+//  - and, for the few patches where that decides something, the side and |d| from below by
+//    the least distance between the patch and the reference triangles near it
+//    (triangle_distance.hpp), which is the exact least |d| up to the rounding slack.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "geometry/bounding_box.hpp"
+#include "geometry/closest_point.hpp"
+#include "search/search_index.hpp"
+
+namespace ncv {
+
+struct PatchCorner {
+  Vec3 point{0, 0, 0};     // in the reference's local frame
+  double d = 0;            // signed distance to the reference, + outside it
+  std::uint32_t face = 0;  // its closest reference triangle
+};
+
+struct Patch {
+  std::array<PatchCorner, 3> corners;
+  std::uint32_t triangle = 0;  // of the sampled mesh
+  std::uint32_t depth = 0;     // 0 for a lattice sub-triangle, +1 per split
+  bool near_checked = false;   // bounded by the nearby triangles (bound_by_nearby) already
+  // Proven: upper_abs >= |d| everywhere on the patch, and when side != 0 the error has that
+  // sign everywhere with |d| >= lower_abs.
+  double upper_abs = 0;
+  double lower_abs = 0;
+  int side = 0;
+
+  double upper() const { return side < 0 ? -lower_abs : upper_abs; }
+  double lower() const { return side > 0 ? lower_abs : -upper_abs; }
+  Vec3 centre() const { return (corners[0].point + corners[1].point + corners[2].point) / 3.0; }
+};
+
+// The largest distance from a point of triangle abc to the nearest of its corners: the
+// circumradius when the triangle is acute, half its longest edge otherwise.
+double covering_radius(Vec3 a, Vec3 b, Vec3 c);
+
+// The cheap bounds from the corners alone (convexity, Lipschitz). `side_is_continuous`:
+// the sign is the true side of a closed surface (pseudonormal), so it can only change where
+// the patch touches the surface.
+void bound_from_corners(Patch& patch, std::span<const TriangleCorners> reference, double slack,
+                        bool side_is_continuous);
+
+// The reference triangles that can come within a distance of a patch, from the grid's cells.
+class NearbyTriangles {
+ public:
+  explicit NearbyTriangles(const SearchIndex& index);
+  std::span<const TriangleCorners> triangles() const { return index_.triangles(); }
+  // Calls visit(t) once for every triangle listed in a cell that meets the patch's box grown
+  // by `reach`; returns false, visiting none, when that box spans more than `max_cells`.
+  template <class Visit>
+  bool for_each(const Patch& patch, double reach, std::uint64_t max_cells, Visit&& visit);
+
+ private:
+  const SearchIndex& index_;
+  std::vector<std::uint32_t> stamps_;
+  std::uint32_t epoch_ = 0;
+};
+
+// The bounds from the reference triangles near the patch: lowers upper_abs by single
+// triangles, coplanar pairs and flat regions that cover the patch (the last loses up to a
+// quarter of `width`, the interval width asked); proves the side where the patch does not
+// touch the reference, and raises lower_abs to the least patch-triangle distance. Leaves
+// what it cannot scan as it is.
+void bound_by_nearby(Patch& patch, NearbyTriangles& nearby, double width, double slack,
+                     bool side_is_continuous);
+
+template <class Visit>
+bool NearbyTriangles::for_each(const Patch& patch, double reach, std::uint64_t max_cells,
+                               Visit&& visit) {
+  const BackgroundGrid& grid = index_.grid();
+  std::array<std::int64_t, 3> lo{}, hi{};
+  std::uint64_t cells = 1;
+  for (int axis = 0; axis < 3; ++axis) {
+    double low = patch.corners[0].point[axis], high = low;
+    for (const PatchCorner& c : patch.corners) {
+      low = std::min(low, c.point[axis]);
+      high = std::max(high, c.point[axis]);
+    }
+    const double last = static_cast<double>(grid.dims[axis]) - 1;
+    const double first_cell = std::floor((low - reach - grid.origin[axis]) / grid.cell_size);
+    const double last_cell = std::floor((high + reach - grid.origin[axis]) / grid.cell_size);
+    // Cells are closed: a triangle on a shared face is listed in both, and a box that ends
+    // on a face reaches the next cell by rounding at most; one cell more on each side covers it.
+    lo[axis] = static_cast<std::int64_t>(std::clamp(first_cell - 1, 0.0, last));
+    hi[axis] = static_cast<std::int64_t>(std::clamp(last_cell + 1, 0.0, last));
+    if (!(first_cell - 1 <= last) || !(last_cell + 1 >= 0)) return true;  // off the grid
+    cells *= static_cast<std::uint64_t>(hi[axis] - lo[axis] + 1);
+  }
+  if (cells > max_cells) return false;
+  if (++epoch_ == 0) {
+    std::fill(stamps_.begin(), stamps_.end(), 0);
+    epoch_ = 1;
+  }
+  for (std::int64_t k = lo[2]; k <= hi[2]; ++k) {
+    for (std::int64_t j = lo[1]; j <= hi[1]; ++j) {
+      for (std::int64_t i = lo[0]; i <= hi[0]; ++i) {
+        const std::uint64_t cell =
+            grid.cell_index(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j),
+                            static_cast<std::uint32_t>(k));
+        for (std::uint64_t e = grid.cell_offsets[cell]; e < grid.cell_offsets[cell + 1]; ++e) {
+          const std::uint32_t t = grid.cell_triangles[e];
+          if (stamps_[t] == epoch_) continue;
+          stamps_[t] = epoch_;
+          visit(t);
+        }
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace ncv

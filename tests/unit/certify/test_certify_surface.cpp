@@ -1,0 +1,153 @@
+// Certified bounds against the truth: dense exact sampling of the workpiece never falls
+// outside the certified interval, a box whose lowered top the lattice misses is caught, and
+// the certificate does not depend on the thread count.
+#include <catch2/catch.hpp>
+
+#include <tbb/global_control.h>
+
+#include <random>
+
+#include "certify/certify_surface.hpp"
+#include "nominal_fixtures.hpp"
+#include "search/indexed_reference.hpp"
+#include "stats_fixtures.hpp"
+
+namespace ncv {
+namespace {
+
+struct Certified {
+  Certificate certificate;
+  double sampled_max = 0, sampled_min = 0;
+};
+
+Certified certify(const Mesh& workpiece, const IndexedReference& nominal, double step,
+                  const CertifyOptions& options = {}) {
+  const SampleSet samples = sample_mesh(workpiece, step, SamplingScheme::all);
+  const SearchIndex index(nominal);
+  const SideRule side(*nominal.surface, SignMethod::pseudonormal);
+  const DistanceField raw =
+      compute_signed_distances(index, samples.positions, {}, SignMethod::pseudonormal);
+  Certified c{certify_surface(samples, raw, index, side, options),
+              *std::max_element(raw.distance.begin(), raw.distance.end()),
+              *std::min_element(raw.distance.begin(), raw.distance.end())};
+  return c;
+}
+
+// The exact signed error at `per_triangle` random points of every workpiece triangle, by
+// brute force over the nominal: its largest and smallest value.
+std::pair<double, double> dense_extremes(const Mesh& workpiece, const IndexedReference& nominal,
+                                         int per_triangle) {
+  std::mt19937_64 rng(5);
+  std::vector<Vec3> points;
+  for (std::size_t t = 0; t < workpiece.triangle_count(); ++t) {
+    for (int k = 0; k < per_triangle; ++k)
+      points.push_back(fixtures::random_point_on(rng, workpiece, t));
+    for (int k = 0; k < 3; ++k) points.push_back(workpiece.corner(t, k));
+  }
+  const DistanceField d =
+      compute_signed_distances(*nominal.surface, points, {}, SignMethod::pseudonormal);
+  return {*std::max_element(d.distance.begin(), d.distance.end()),
+          *std::min_element(d.distance.begin(), d.distance.end())};
+}
+
+void check_contains_truth(const Mesh& workpiece, const IndexedReference& nominal, double step) {
+  const Certified c = certify(workpiece, nominal, step, CertifyOptions{0.01, 0});
+  const auto [true_max, true_min] = dense_extremes(workpiece, nominal, 400);
+  CHECK(c.certificate.max.bound >= true_max);
+  CHECK(c.certificate.min.bound <= true_min);
+  CHECK(c.certificate.max.measured >= c.sampled_max);
+  CHECK(c.certificate.min.measured <= c.sampled_min);
+  CHECK(c.certificate.sign_proven);
+  if (c.certificate.unresolved == 0) {
+    CHECK(c.certificate.max.width() <= 0.01);
+    CHECK(c.certificate.min.width() <= 0.01);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("a box whose top is 0.2 low is caught between samples at a coarse step", "[certify]") {
+  const IndexedReference nominal =
+      index_reference(fixtures::box({-50, -50, 0}, {50, 50, 30}), "box");
+  const Mesh lowered = fixtures::box({-50, -50, 0}, {50, 50, 29.8});
+  const Certified c = certify(lowered, nominal, 40.0);
+  // The samples are the corners, on the nominal's walls: they read 0.
+  CHECK(c.sampled_min == 0);
+  CHECK(c.certificate.min.bound <= -0.2);
+  CHECK(c.certificate.min.measured == Approx(-0.2).margin(1e-9));
+  CHECK(c.certificate.added_points > 0);
+}
+
+TEST_CASE("a box offset outward is bounded to the width asked", "[certify]") {
+  const IndexedReference nominal = index_reference(fixtures::box({0, 0, 0}, {10, 10, 10}), "box");
+  const Mesh raised = fixtures::box({-0.1, -0.1, -0.1}, {10.1, 10.1, 10.1});
+  const Certified c = certify(raised, nominal, 1.0, CertifyOptions{0.001, 0});
+  // The corners are sqrt(3) * 0.1 away, the faces 0.1: every point is between.
+  CHECK(c.certificate.max.bound >= std::sqrt(3.0) * 0.1);
+  CHECK(c.certificate.max.width() <= 0.001);
+  CHECK(c.certificate.min.bound <= 0.1);
+  CHECK(c.certificate.min.bound >= 0.1 - 0.001);
+  CHECK(c.certificate.unresolved == 0);
+}
+
+TEST_CASE("dense exact sampling never leaves the certified interval", "[certify]") {
+  SECTION("a coarse torus against a finer, fatter one") {
+    const IndexedReference nominal = index_reference(fixtures::torus(10, 3.2, 48, 24), "torus");
+    check_contains_truth(fixtures::torus(10, 3, 20, 10), nominal, 1.5);
+  }
+  SECTION("a pocketed block against itself moved by less than the step") {
+    const Mesh block = fixtures::pocketed_block().mesh(5);
+    const IndexedReference nominal = index_reference(block, "block");
+    check_contains_truth(fixtures::translated(block, {0.13, -0.07, 0.21}), nominal, 2.0);
+  }
+  SECTION("a torus crossing a box") {
+    const IndexedReference nominal = index_reference(fixtures::box({-9, -9, -2}, {9, 9, 2}), "box");
+    check_contains_truth(fixtures::torus(8, 2.5, 24, 12), nominal, 1.0);
+  }
+}
+
+TEST_CASE("the certificate does not depend on the thread count", "[certify]") {
+  const IndexedReference nominal = index_reference(fixtures::torus(10, 3.2, 48, 24), "torus");
+  const Mesh workpiece = fixtures::torus(10, 3, 30, 14);
+  const auto run = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    return certify(workpiece, nominal, 0.7, CertifyOptions{0.0005, 0}).certificate;
+  };
+  const Certificate one = run(1), two = run(2);
+  CHECK(one.max.bound == two.max.bound);
+  CHECK(one.min.bound == two.min.bound);
+  CHECK(one.max.measured == two.max.measured);
+  CHECK(one.min.measured == two.min.measured);
+  CHECK(one.max.bound_at == two.max.bound_at);
+  CHECK(one.added_points == two.added_points);
+  CHECK(one.unresolved == two.unresolved);
+}
+
+TEST_CASE("refinement stops at its cap and says what is unresolved", "[certify]") {
+  const IndexedReference nominal =
+      index_reference(fixtures::box({-50, -50, 0}, {50, 50, 30}), "box");
+  const Mesh lowered = fixtures::box({-50, -50, 0}, {50, 50, 29.8});
+  const Certified c = certify(lowered, nominal, 40.0, CertifyOptions{1e-6, 300});
+  CHECK(c.certificate.added_points <= 300);
+  CHECK(c.certificate.unresolved > 0);
+  CHECK(c.certificate.min.bound <= -0.2);  // still sound
+}
+
+}  // namespace ncv
+
+namespace ncv {
+
+TEST_CASE("a patch over a finely tessellated flat face is bounded by its height above it",
+          "[certify]") {
+  // The reference: a 10 x 10 square in z = 0 of 800 small triangles (open, so only |d| is
+  // bounded); the sampled surface: one large triangle 0.01 above it, sampled at its corners.
+  const IndexedReference nominal = index_reference(test::flat_grid(20, 10), "grid");
+  Mesh above{{{1, 1, 0.01}, {9, 1.5, 0.01}, {2, 8.5, 0.01}}, {{0, 1, 2}}};
+  const Certified c = certify(above, nominal, 100.0, CertifyOptions{0.001, 0});
+  CHECK(c.certificate.max.bound <= 0.01 + 0.001);
+  CHECK(c.certificate.min.bound >= -0.01 - 0.001);
+  // Over an open surface the side is not proven, so only |d| is bounded: within the width.
+  CHECK(c.certificate.max.width() <= 0.001);
+}
+
+}  // namespace ncv

@@ -1,0 +1,40 @@
+#include <catch2/catch.hpp>
+
+#include <random>
+
+#include "certify/patch_bounds.hpp"
+
+namespace ncv {
+
+TEST_CASE("every point of a triangle lies within its covering radius of a corner",
+          "[patch_bounds]") {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int trial = 0; trial < 300; ++trial) {
+    const Vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng));
+    // Every tenth one a sliver: its third corner near the first edge.
+    const Vec3 c =
+        trial % 10 == 0 ? 0.3 * a + 0.7 * b + Vec3(0, 0, 1e-3) : Vec3(u(rng), u(rng), u(rng));
+    const double radius = covering_radius(a, b, c);
+    double farthest = 0;
+    for (int i = 0; i <= 100; ++i) {
+      for (int j = 0; i + j <= 100; ++j) {
+        const Vec3 p = a + (i / 100.0) * (b - a) + (j / 100.0) * (c - a);
+        farthest = std::max(farthest, std::min({norm(p - a), norm(p - b), norm(p - c)}));
+      }
+    }
+    CHECK(farthest <= radius * (1 + 1e-12));
+    // Acute, the circumcentre is inside and reached; obtuse, half the longest edge is only
+    // an upper bound.
+    const double ab = squared_norm(b - a), bc = squared_norm(c - b), ca = squared_norm(a - c);
+    if (ab < bc + ca && bc < ca + ab && ca < ab + bc) CHECK(farthest >= 0.97 * radius);
+  }
+}
+
+TEST_CASE("the equilateral triangle's covering radius is its circumradius", "[patch_bounds]") {
+  const Vec3 a(0, 0, 0), b(1, 0, 0), c(0.5, std::sqrt(3.0) / 2, 0);
+  CHECK(covering_radius(a, b, c) == Approx(1 / std::sqrt(3.0)));
+  CHECK(covering_radius(a, b, Vec3(0.5, 0.1, 0)) == Approx(0.5));  // obtuse: half the base
+}
+
+}  // namespace ncv
