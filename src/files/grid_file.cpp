@@ -113,11 +113,6 @@ StoredSurface read_stored_surface(const Container& c, std::uint64_t vertices,
   StoredSurface s;
   s.topology = read_topology(c);
   s.flipped = bool_field(c, "/nominal/flipped_to_outward");
-  const nlohmann::json& from = c.field("/nominal/topology_from");
-  if (!from.is_string() || (from != "openmesh" && from != "arrays")) {
-    c.fail("metadata field /nominal/topology_from is neither openmesh nor arrays");
-  }
-  s.on_halfedges = from == "openmesh";
   s.boundary_loop_count = c.count("/nominal/boundary_loops/count");
   const nlohmann::json& listed = c.field("/nominal/boundary_loops/listed");
   if (!listed.is_array() || listed.size() > s.boundary_loop_count) {
@@ -149,11 +144,14 @@ void write_grid_file(const IndexedReference& g, const GridStatistics& statistics
   writer.add_points("nominal_vertices", g.mesh.vertices);
   writer.add<std::uint32_t>("nominal_triangles", flat_indices(g.mesh.triangles),
                             {g.mesh.triangle_count(), 3});
-  // The pseudonormals, so that `distance` need not rebuild the topology (docs/FORMATS.md).
-  const Pseudonormals& normals = g.surface->normals();
-  writer.add_points("vertex_pseudonormals", normals.vertex);
-  writer.add_points("edge_pseudonormals", normals.edge);
-  writer.add<std::uint32_t>("edge_of_slot", normals.edge_of_slot, {g.mesh.triangle_count(), 3});
+  // The pseudonormals of a surface held on halfedges, so that `distance` need not rebuild
+  // them (docs/FORMATS.md); one held on the arrays is rebuilt from them as before.
+  if (g.surface->on_halfedges()) {
+    const Pseudonormals& normals = g.surface->normals();
+    writer.add_points("vertex_pseudonormals", normals.vertex);
+    writer.add_points("edge_pseudonormals", normals.edge);
+    writer.add<std::uint32_t>("edge_of_slot", normals.edge_of_slot, {g.mesh.triangle_count(), 3});
+  }
   // Each cell's count rather than its offset: most cells of a dense mesh's grid are empty or
   // short, so a byte each instead of eight.
   std::vector<std::uint32_t> counts(g.grid.cell_count());
@@ -180,7 +178,16 @@ IndexedReference load_indexed_reference(const Container& c) {
   if (mesh_hash(g.mesh) != g.hash) c.fail("nominal mesh hash does not match");
   g.source = c.field("/nominal/source").is_string() ? c.field("/nominal/source").get<std::string>()
                                                     : std::string("nominal");
-  g.surface = std::make_unique<ReferenceSurface>(g.mesh, c.source(), read_stored_surface(c, V, T));
+  const nlohmann::json& from = c.field("/nominal/topology_from");
+  if (!from.is_string() || (from != "openmesh" && from != "arrays")) {
+    c.fail("metadata field /nominal/topology_from is neither openmesh nor arrays");
+  }
+  if (from == "openmesh") {
+    g.surface =
+        std::make_unique<ReferenceSurface>(g.mesh, c.source(), read_stored_surface(c, V, T));
+  } else {
+    g.surface = std::make_unique<ReferenceSurface>(g.mesh, c.source(), SurfaceHolding::arrays);
+  }
 
   const nlohmann::json& origin = c.field("/grid/origin_local");
   const nlohmann::json& dims = c.field("/grid/dims");

@@ -29,6 +29,17 @@ bool is_zero(Vec3 v) {
   return v == Vec3(0, 0, 0);  // a real unit normal is never zero
 }
 
+Vec3 face_normal(Vec3 a, Vec3 b, Vec3 c) {
+  return is_degenerate_triangle(a, b, c) ? Vec3(0, 0, 0) : normalized(cross(b - a, c - a));
+}
+
+// One face's share of a vertex pseudonormal.
+struct Term {
+  int face;
+  Vec3 value;
+};
+constexpr std::size_t kStackTerms = 16;
+
 void normalize_all(std::vector<Vec3>& vectors) {
   parallel_over(vectors.size(), 1 << 14,
                 [&](std::size_t i) { vectors[i] = normalized(vectors[i]); });
@@ -39,8 +50,7 @@ void normalize_all(std::vector<Vec3>& vectors) {
 Buffer<Vec3> face_normals(std::span<const TriangleCorners> corners) {
   Buffer<Vec3> normals(corners.size());
   parallel_over(corners.size(), 1 << 12, [&](std::size_t t) {
-    const auto& [a, b, c] = corners[t];
-    normals[t] = is_degenerate_triangle(a, b, c) ? Vec3(0, 0, 0) : normalized(cross(b - a, c - a));
+    normals[t] = face_normal(corners[t][0], corners[t][1], corners[t][2]);
   });
   return normals;
 }
@@ -51,34 +61,51 @@ Buffer<Vec3> face_normals(std::span<const TriangleCorners> corners) {
 // by face before they are added, as the arrays' triangle-order loop adds them.
 Pseudonormals halfedge_pseudonormals(const TriMesh& mesh, const EdgeIncidence& incidence) {
   Pseudonormals normals;
-  std::vector<TriangleCorners> corners(mesh.n_faces());
+  normals.face.resize(mesh.n_faces());
   parallel_over(mesh.n_faces(), 1 << 12, [&](std::size_t f) {
     const auto h = mesh.halfedge_handle(TriMesh::FaceHandle(static_cast<int>(f)));
-    corners[f] = {mesh.point(mesh.from_vertex_handle(h)), mesh.point(mesh.to_vertex_handle(h)),
-                  mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h)))};
+    normals.face[f] =
+        face_normal(mesh.point(mesh.from_vertex_handle(h)), mesh.point(mesh.to_vertex_handle(h)),
+                    mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h))));
   });
-  normals.face = face_normals(corners);
 
   normals.vertex.resize(mesh.n_vertices());
   parallel_over(mesh.n_vertices(), 1 << 12, [&](std::size_t v) {
     const auto vertex = TriMesh::VertexHandle(static_cast<int>(v));
-    std::vector<std::pair<int, Vec3>> terms;
-    terms.reserve(8);
+    // A vertex has a handful of faces: their terms on the stack, the rare crowded vertex on
+    // the heap (an allocation per vertex cost as much as the sums).
+    std::array<Term, kStackTerms> stack_terms;
+    std::vector<Term> heap_terms;
+    std::size_t count = 0;
     const Vec3 apex = mesh.point(vertex);
-    for (const auto h : mesh.voh_range(vertex)) {
-      if (mesh.is_boundary(h)) continue;
+    // Around the vertex by hand (clockwise: after outgoing h comes next(opposite(h))), the
+    // step count bounded so that no structure can loop forever.
+    const TriMesh::HalfedgeHandle first = mesh.halfedge_handle(vertex);
+    TriMesh::HalfedgeHandle h = first;
+    for (std::size_t steps = 0; first.is_valid() && steps < mesh.n_halfedges(); ++steps) {
       const int face = mesh.face_handle(h).idx();
-      const Vec3 n = normals.face[static_cast<std::size_t>(face)];
-      if (is_zero(n)) continue;
-      const double angle =
-          corner_angle(apex, mesh.point(mesh.to_vertex_handle(h)),
-                       mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h))));
-      terms.emplace_back(face, angle * n);
+      if (face >= 0 && !is_zero(normals.face[static_cast<std::size_t>(face)])) {
+        const double angle =
+            corner_angle(apex, mesh.point(mesh.to_vertex_handle(h)),
+                         mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h))));
+        const Term term{face, angle * normals.face[static_cast<std::size_t>(face)]};
+        if (count == kStackTerms) heap_terms.assign(stack_terms.begin(), stack_terms.end());
+        if (count >= kStackTerms) {
+          heap_terms.push_back(term);
+        } else {
+          stack_terms[count] = term;
+        }
+        ++count;
+      }
+      h = mesh.next_halfedge_handle(mesh.opposite_halfedge_handle(h));
+      if (h == first) break;
     }
+    const std::span<Term> terms = count > kStackTerms ? std::span<Term>(heap_terms)
+                                                      : std::span<Term>(stack_terms.data(), count);
     std::sort(terms.begin(), terms.end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
+              [](const Term& a, const Term& b) { return a.face < b.face; });
     Vec3 sum(0, 0, 0);
-    for (const auto& term : terms) sum += term.second;
+    for (const Term& term : terms) sum += term.value;
     normals.vertex[v] = normalized(sum);
   });
 

@@ -73,7 +73,7 @@ void ReferenceSurface::enter_local_frame(Mesh mesh, const std::string& source) {
   local_bounds_ = bounding_box(local_);
 }
 
-ReferenceSurface::ReferenceSurface(Mesh mesh, const std::string& source) {
+ReferenceSurface::ReferenceSurface(Mesh mesh, const std::string& source, SurfaceHolding holding) {
   enter_local_frame(std::move(mesh), source);
   EdgeIncidence incidence = build_edge_incidence(local_);
   topology_ = analyse_topology(local_, incidence);
@@ -86,7 +86,7 @@ ReferenceSurface::ReferenceSurface(Mesh mesh, const std::string& source) {
     for (std::uint32_t& slot : incidence.slots) slot = slot / 3 * 3 + (2 - slot % 3);
   }
   copy_corners();
-  compute_normals(incidence);
+  compute_normals(incidence, holding);
   choose_sign_method(source);
 }
 
@@ -111,7 +111,7 @@ ReferenceSurface::ReferenceSurface(Mesh mesh, const std::string& source, StoredS
   if (!finite(stored.vertex_pseudonormals) || !finite(stored.edge_pseudonormals)) {
     fail("pseudonormals");
   }
-  on_halfedges_ = stored.on_halfedges;
+  on_halfedges_ = true;
   boundary_loops_ = std::move(stored.boundary_loops);
   boundary_loop_count_ = stored.boundary_loop_count;
   copy_corners();
@@ -125,8 +125,8 @@ ReferenceSurface::ReferenceSurface(Mesh mesh, const std::string& source, StoredS
 // On OpenMesh's halfedges where it can hold the mesh; there the boundary edges are counted
 // on them too, so that "closed" is OpenMesh's answer (the arrays' count is the same: a test
 // checks it).
-void ReferenceSurface::compute_normals(EdgeIncidence& incidence) {
-  if (!holds_as_halfedge_mesh(local_, topology_)) {
+void ReferenceSurface::compute_normals(EdgeIncidence& incidence, SurfaceHolding holding) {
+  if (holding == SurfaceHolding::arrays || !holds_as_halfedge_mesh(local_, topology_)) {
     normals_ = array_pseudonormals(local_, corners_, incidence);
     return;
   }

@@ -45,11 +45,19 @@ namespace ncv {
 // Keeps slot indices (3 per triangle) and grid cell indices (<= 4 per triangle) in 32 bits.
 inline constexpr std::size_t kMaxReferenceTriangles = std::size_t{1} << 28;
 
-// What a grid file keeps of a ReferenceSurface besides its mesh (docs/FORMATS.md).
+// Where the topology and pseudonormals come from. `run`'s reverse direction indexes the
+// workpiece (1.25 M triangles in the paper-scale finishing job) on the arrays: there the
+// halfedge way measured slower, run's reverse grid-build phase 1.22-1.41 s against
+// 1.69-1.70 s (medians of 3, bench/compare_binaries.py, 2 busy cores), and its grid file
+// 35 MB against 110 MB (the stored pseudonormals); the nominal's holes are what a report
+// names, the workpiece's are not.
+enum class SurfaceHolding { halfedges_where_possible, arrays };
+
+// What a grid file keeps of a ReferenceSurface held on halfedges besides its mesh
+// (docs/FORMATS.md).
 struct StoredSurface {
   TopologyReport topology;
   bool flipped = false;
-  bool on_halfedges = false;  // topology and normals from OpenMesh's halfedge structure
   std::uint64_t boundary_loop_count = 0;
   std::vector<BoundaryLoop> boundary_loops;  // the first of them (the file lists at most 100)
   std::vector<Vec3> vertex_pseudonormals;
@@ -61,8 +69,10 @@ class ReferenceSurface {
  public:
   // Throws InputError(source, ...) for a mesh that cannot be used: no triangles, too many,
   // a vertex index out of range, a non-finite or absurdly large coordinate.
-  ReferenceSurface(Mesh mesh, const std::string& source);
-  // From a grid file: `mesh` as read (before any flip) and what was computed from it. The
+  ReferenceSurface(Mesh mesh, const std::string& source,
+                   SurfaceHolding holding = SurfaceHolding::halfedges_where_possible);
+  // From a grid file: `mesh` as read (before any flip) and what was computed from it on its
+  // halfedges. The
   // face normals are made again from the corners (a per-face formula, the same bits), the
   // rest is taken as stored after checking its sizes and indices (InputError otherwise).
   ReferenceSurface(Mesh mesh, const std::string& source, StoredSurface stored);
@@ -101,7 +111,7 @@ class ReferenceSurface {
   void orient_outward(const std::string& source);
   void choose_sign_method(const std::string& source);
   void copy_corners();
-  void compute_normals(EdgeIncidence& incidence);
+  void compute_normals(EdgeIncidence& incidence, SurfaceHolding holding);
 
   Vec3 origin_{0, 0, 0};
   Mesh local_;

@@ -13,10 +13,12 @@
 
 namespace ncv {
 
-IndexedSurface index_surface(Mesh mesh, const std::string& source, const GridOptions& options) {
+IndexedSurface index_surface(Mesh mesh, const std::string& source, const GridOptions& options,
+                             SurfaceHolding holding) {
   Stopwatch clock;
   IndexedSurface indexed;
-  indexed.reference = index_reference(std::move(mesh), source, options, &indexed.statistics);
+  indexed.reference =
+      index_reference(std::move(mesh), source, options, &indexed.statistics, holding);
   indexed.seconds = clock.seconds();
   return indexed;
 }
