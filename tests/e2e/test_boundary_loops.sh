@@ -6,21 +6,18 @@
 . "$(dirname "$0")/lib.sh"
 cd "$WORK"
 
+# The 4 x 2 x 1 box of lib.sh (triangles 2 and 3 its top, 0 and 1 its bottom) with faces
+# taken away or added: its 50-byte facet records copied.
+write_box_stl closed.stl 4 2 1
 /usr/bin/python3 - <<'PY'
 import struct
-V = [(0,0,0),(4,0,0),(4,2,0),(0,2,0),(0,0,1),(4,0,1),(4,2,1),(0,2,1)]
-F = [(0,2,1),(0,3,2),(4,5,6),(4,6,7),(0,1,5),(0,5,4),(1,2,6),(1,6,5),(2,3,7),(2,7,6),(3,0,4),(3,4,7)]
-def write(path, V, F):
-    with open(path, 'wb') as f:
-        f.write(b'box'.ljust(80, b' ')); f.write(struct.pack('<I', len(F)))
-        for t in F:
-            f.write(struct.pack('<3f', 0, 0, 0))
-            for v in t: f.write(struct.pack('<3f', *V[v]))
-            f.write(b'\0\0')
-write('closed.stl', V, F)
-write('lidless.stl', V, F[:2] + F[4:])           # the top (z = 1) removed: a 4 x 2 hole
-write('tube.stl', V, F[4:])                      # top and bottom removed: two holes
-write('fin.stl', V + [(2,-3,0)], F + [(0,1,8)])  # a third face on edge {0, 1}
+data = open('closed.stl', 'rb').read()
+facets = [data[84 + 50 * i:134 + 50 * i] for i in range(12)]
+fin = struct.pack('<12f', 0, 0, 0, 0, 0, 0, 4, 0, 0, 2, -3, 0) + b'\0\0'  # on edge {0, 1}
+for name, chosen in (('lidless.stl', facets[:2] + facets[4:]),  # the top removed: a 4 x 2 hole
+                     ('tube.stl', facets[4:]),                   # top and bottom: two holes
+                     ('fin.stl', facets + [fin])):               # a third face on an edge
+    open(name, 'wb').write(data[:80] + struct.pack('<I', len(chosen)) + b''.join(chosen))
 PY
 
 check "grid-build of a lidless box" "$NCVERIFY" grid-build lidless.stl -o lidless.grid 2>lidless.log
@@ -60,7 +57,7 @@ check "fin: from the arrays" grep -qF '"topology_from":"arrays"' <("$NCVERIFY" i
 
 # The distances through the stored pseudonormals equal those of run, which builds them in
 # process.
-write_box_stl part.stl 4 2 1
+cp closed.stl part.stl
 "$NCVERIFY" sample part.stl -o part.samples 2>/dev/null
 "$NCVERIFY" distance part.samples lidless.grid -o part.dist 2>/dev/null
 "$NCVERIFY" run part.stl lidless.stl --one-sided -d run -q >/dev/null 2>&1

@@ -13,18 +13,10 @@ namespace {
 
 namespace fx = ncv::fixtures;
 
-std::vector<ncv::TriangleCorners> corners_of(const ncv::Mesh& mesh) {
-  std::vector<ncv::TriangleCorners> corners;
-  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-    corners.push_back({mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2)});
-  }
-  return corners;
-}
-
 void check_bit_identical(const ncv::Mesh& mesh) {
   const ncv::EdgeIncidence incidence = ncv::build_edge_incidence(mesh);
   REQUIRE(ncv::holds_as_halfedge_mesh(mesh, ncv::analyse_topology(mesh, incidence)));
-  const ncv::Pseudonormals arrays = ncv::array_pseudonormals(mesh, corners_of(mesh), incidence);
+  const ncv::Pseudonormals arrays = ncv::array_pseudonormals(mesh, fx::corners_of(mesh), incidence);
   for (int threads : {1, 2}) {
     const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
     const ncv::Pseudonormals halfedges =
