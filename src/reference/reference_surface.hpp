@@ -19,11 +19,12 @@
 //
 // Topology and normals: a nominal OpenMesh can hold as it is (halfedge_mesh.hpp: at most two
 // faces on an edge, in opposite directions, one fan per vertex) is held as an OpenMesh
-// TriMesh, built once here; whether it is closed, its boundary loops, its face normals and its
-// pseudonormals (pseudonormals.hpp) come from its halfedge structure. One it cannot hold is
-// detected on the plain arrays (analyse_topology) and signed by the winding number; its
-// pseudonormals (for an explicit --sign pseudonormal) come from the arrays. A grid file
-// stores the results, so a surface read back from one (StoredSurface) rebuilds none of them.
+// TriMesh, built once here (in the grid step) and let go once its results are taken: whether
+// it is closed, its boundary loops, its face normals and its pseudonormals
+// (pseudonormals.hpp) come from its halfedge structure. One it cannot hold is detected on the
+// plain arrays (analyse_topology) and signed by the winding number; its pseudonormals (for an
+// explicit --sign pseudonormal) come from the arrays. A grid file stores the results of a
+// surface held on halfedges, so one read back (StoredSurface) rebuilds none of them.
 #pragma once
 
 #include <cstdint>
