@@ -37,7 +37,7 @@ enum class FileKind { samples, grid, distances };
 
 // The format version this build writes and reads, per kind.
 inline constexpr std::uint32_t kSamplesFormatVersion = 3;
-inline constexpr std::uint32_t kGridFormatVersion = 2;
+inline constexpr std::uint32_t kGridFormatVersion = 3;
 inline constexpr std::uint32_t kDistancesFormatVersion = 3;
 std::uint32_t format_version(FileKind kind);
 

@@ -10,6 +10,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "mesh/halfedge_mesh.hpp"
 #include "util/error.hpp"
 
 namespace ncv {
@@ -38,12 +39,6 @@ void check_usable(const Mesh& mesh, const std::string& source) {
   }
 }
 
-double corner_angle(Vec3 apex, Vec3 b, Vec3 c) {
-  const Vec3 u = b - apex;
-  const Vec3 v = c - apex;
-  return std::atan2(norm(cross(u, v)), dot(u, v));
-}
-
 // Rounding alone gives a flat or inside-out-and-back mesh a signed volume of about 1e-16
 // of its diagonal cubed; only volumes well beyond that say anything about orientation.
 double volume_tolerance(const BoundingBox& box) {
@@ -68,23 +63,18 @@ std::string describe_defects(const TopologyReport& t, double volume_tolerance) {
   return reason;
 }
 
-void normalize_all(std::vector<Vec3>& vectors) {
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vectors.size(), 1 << 14),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t i = range.begin(); i < range.end(); ++i)
-                        vectors[i] = normalized(vectors[i]);
-                    });
-}
-
 }  // namespace
 
-ReferenceSurface::ReferenceSurface(Mesh mesh, const std::string& source) {
+void ReferenceSurface::enter_local_frame(Mesh mesh, const std::string& source) {
   check_usable(mesh, source);
   origin_ = bounding_box(mesh).center();
   local_ = std::move(mesh);
   for (Vec3& v : local_.vertices) v = to_local(v);
   local_bounds_ = bounding_box(local_);
+}
 
+ReferenceSurface::ReferenceSurface(Mesh mesh, const std::string& source, SurfaceHolding holding) {
+  enter_local_frame(std::move(mesh), source);
   EdgeIncidence incidence = build_edge_incidence(local_);
   topology_ = analyse_topology(local_, incidence);
   orient_outward(source);
@@ -93,11 +83,61 @@ ReferenceSurface::ReferenceSurface(Mesh mesh, const std::string& source) {
     for (std::size_t t = 0; t < local_.triangle_count(); ++t) {
       std::swap(incidence.edge_of_slot[3 * t], incidence.edge_of_slot[3 * t + 2]);
     }
+    for (std::uint32_t& slot : incidence.slots) slot = slot / 3 * 3 + (2 - slot % 3);
   }
-  choose_sign_method(source);
-
   copy_corners();
-  compute_normals(incidence);
+  compute_normals(incidence, holding);
+  choose_sign_method(source);
+}
+
+ReferenceSurface::ReferenceSurface(Mesh mesh, const std::string& source, StoredSurface stored) {
+  enter_local_frame(std::move(mesh), source);
+  topology_ = stored.topology;
+  const auto fail = [&](const char* what) {
+    throw InputError(source, fmt::format("the stored {} do not fit the nominal mesh", what));
+  };
+  orient_outward(source);  // decided by the stored signed volume, as when it was built
+  if (flipped_ != stored.flipped) fail("orientation and signed volume");
+  if (stored.vertex_pseudonormals.size() != local_.vertex_count()) fail("vertex pseudonormals");
+  if (stored.edge_of_slot.size() != 3 * local_.triangle_count()) fail("triangle edges");
+  const std::size_t edges = stored.edge_pseudonormals.size();
+  if (std::any_of(stored.edge_of_slot.begin(), stored.edge_of_slot.end(),
+                  [&](std::uint32_t e) { return e != kNoEdge && e >= edges; })) {
+    fail("triangle edges");
+  }
+  const auto finite = [](const std::vector<Vec3>& v) {
+    return std::all_of(v.begin(), v.end(), [](const Vec3& p) { return is_finite(p); });
+  };
+  if (!finite(stored.vertex_pseudonormals) || !finite(stored.edge_pseudonormals)) {
+    fail("pseudonormals");
+  }
+  on_halfedges_ = true;
+  boundary_loops_ = std::move(stored.boundary_loops);
+  boundary_loop_count_ = stored.boundary_loop_count;
+  copy_corners();
+  normals_.face = face_normals(corners_);
+  normals_.vertex = std::move(stored.vertex_pseudonormals);
+  normals_.edge = std::move(stored.edge_pseudonormals);
+  normals_.edge_of_slot = std::move(stored.edge_of_slot);
+  choose_sign_method(source);
+}
+
+// On OpenMesh's halfedges where it can hold the mesh; there the boundary edges are counted
+// on them too, so that "closed" is OpenMesh's answer (the arrays' count is the same: a test
+// checks it).
+void ReferenceSurface::compute_normals(EdgeIncidence& incidence, SurfaceHolding holding) {
+  if (holding == SurfaceHolding::arrays || !holds_as_halfedge_mesh(local_, topology_)) {
+    normals_ = array_pseudonormals(local_, corners_, incidence);
+    return;
+  }
+  const TriMesh halfedges = halfedge_mesh(local_, incidence);
+  std::vector<BoundaryLoop> loops = ncv::boundary_loops(halfedges);
+  topology_.boundary_edges = 0;
+  for (const BoundaryLoop& loop : loops) topology_.boundary_edges += loop.edges;
+  boundary_loop_count_ = loops.size();
+  boundary_loops_ = translated(std::move(loops), origin_);
+  normals_ = halfedge_pseudonormals(halfedges, incidence);
+  on_halfedges_ = true;
 }
 
 // Into an uninitialised buffer, in parallel: zero-filling 72 bytes per triangle first, on
@@ -131,53 +171,15 @@ void ReferenceSurface::choose_sign_method(const std::string& source) {
       source, winding_reason_);
 }
 
-void ReferenceSurface::compute_normals(const EdgeIncidence& incidence) {
-  const std::size_t triangles = local_.triangle_count();
-  face_normals_.resize(triangles);
-  vertex_normals_.assign(local_.vertex_count(), Vec3(0, 0, 0));
-  edge_normals_.assign(incidence.edge_count(), Vec3(0, 0, 0));
-  edge_of_slot_ = incidence.edge_of_slot;
-  // Face normals and corner angles in parallel; the angle-weighted sums below stay serial,
-  // in triangle order, so they do not depend on the thread count. The angles are kept
-  // rather than their products with the normal: a third of the memory to write and read.
-  Buffer<std::array<double, 3>> corner_angles(triangles);
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, triangles, 1 << 12),
-      [&](const tbb::blocked_range<std::size_t>& range) {
-        for (std::size_t t = range.begin(); t < range.end(); ++t) {
-          const auto& [a, b, c] = corners_[t];
-          if (is_degenerate_triangle(a, b, c)) {
-            face_normals_[t] = Vec3(0, 0, 0);
-            continue;
-          }
-          face_normals_[t] = normalized(cross(b - a, c - a));
-          corner_angles[t] = {corner_angle(a, b, c), corner_angle(b, c, a), corner_angle(c, a, b)};
-        }
-      });
-  for (std::size_t t = 0; t < triangles; ++t) {
-    if (face_normals_[t] == Vec3(0, 0, 0))
-      continue;  // degenerate (a real unit normal is never zero)
-    const Vec3 n = face_normals_[t];
-    const Triangle& tri = local_.triangles[t];
-    for (int k = 0; k < 3; ++k) vertex_normals_[tri[k]] += corner_angles[t][k] * n;
-    for (std::size_t k = 0; k < 3; ++k) {
-      const std::uint32_t edge = edge_of_slot_[3 * t + k];
-      if (edge != kNoEdge) edge_normals_[edge] += n;
-    }
-  }
-  normalize_all(vertex_normals_);
-  normalize_all(edge_normals_);
-}
-
 Vec3 ReferenceSurface::pseudonormal(std::size_t triangle, TriangleFeature feature) const {
   if (is_vertex(feature)) {
-    return vertex_normals_[local_.triangles[triangle][vertex_index(feature)]];
+    return normals_.vertex[local_.triangles[triangle][vertex_index(feature)]];
   }
   if (is_edge(feature)) {
-    const std::uint32_t edge = edge_of_slot_[3 * triangle + edge_index(feature)];
-    return edge == kNoEdge ? Vec3(0, 0, 0) : edge_normals_[edge];
+    const std::uint32_t edge = normals_.edge_of_slot[3 * triangle + edge_index(feature)];
+    return edge == kNoEdge ? Vec3(0, 0, 0) : normals_.edge[edge];
   }
-  return face_normals_[triangle];
+  return normals_.face[triangle];
 }
 
 }  // namespace ncv

@@ -17,10 +17,14 @@
 // (edges and vertices), consistently oriented and encloses a volume (beyond the same
 // tolerance); otherwise the generalized winding number, with a warning that says why.
 //
-// Pseudonormals (Baerentzen & Aanaes 2005) are built from unit face normals: a vertex sums
-// the normals of its faces weighted by the face angle there, an edge sums the normals of
-// the faces along it. Degenerate faces (see is_degenerate_triangle) have a zero normal and
-// so contribute nothing; they cannot outvote their neighbours with a noisy direction.
+// Topology and normals: a nominal OpenMesh can hold as it is (halfedge_mesh.hpp: at most two
+// faces on an edge, in opposite directions, one fan per vertex) is held as an OpenMesh
+// TriMesh, built once here (in the grid step) and let go once its results are taken: whether
+// it is closed, its boundary loops, its face normals and its pseudonormals
+// (pseudonormals.hpp) come from its halfedge structure. One it cannot hold is detected on the
+// plain arrays (analyse_topology) and signed by the winding number; its pseudonormals (for an
+// explicit --sign pseudonormal) come from the arrays. A grid file stores the results of a
+// surface held on halfedges, so one read back (StoredSurface) rebuilds none of them.
 #pragma once
 
 #include <cstdint>
@@ -30,8 +34,10 @@
 
 #include "geometry/closest_point.hpp"
 #include "geometry/coordinate_limit.hpp"
+#include "mesh/boundary_loops.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/mesh_topology.hpp"
+#include "reference/pseudonormals.hpp"
 #include "reference/sign_method.hpp"
 #include "util/buffer.hpp"
 
@@ -40,11 +46,37 @@ namespace ncv {
 // Keeps slot indices (3 per triangle) and grid cell indices (<= 4 per triangle) in 32 bits.
 inline constexpr std::size_t kMaxReferenceTriangles = std::size_t{1} << 28;
 
+// Where the topology and pseudonormals come from. `run`'s reverse direction indexes the
+// workpiece (1.25 M triangles in the paper-scale finishing job) on the arrays: there the
+// halfedge way measured slower, run's reverse grid-build phase 1.22-1.41 s against
+// 1.69-1.70 s (medians of 3, bench/compare_binaries.py, 2 busy cores), and its grid file
+// 35 MB against 110 MB (the stored pseudonormals); the nominal's holes are what a report
+// names, the workpiece's are not.
+enum class SurfaceHolding { halfedges_where_possible, arrays };
+
+// What a grid file keeps of a ReferenceSurface held on halfedges besides its mesh
+// (docs/FORMATS.md).
+struct StoredSurface {
+  TopologyReport topology;
+  bool flipped = false;
+  std::uint64_t boundary_loop_count = 0;
+  std::vector<BoundaryLoop> boundary_loops;  // the first of them (the file lists at most 100)
+  std::vector<Vec3> vertex_pseudonormals;
+  std::vector<Vec3> edge_pseudonormals;
+  std::vector<std::uint32_t> edge_of_slot;
+};
+
 class ReferenceSurface {
  public:
   // Throws InputError(source, ...) for a mesh that cannot be used: no triangles, too many,
   // a vertex index out of range, a non-finite or absurdly large coordinate.
-  ReferenceSurface(Mesh mesh, const std::string& source);
+  ReferenceSurface(Mesh mesh, const std::string& source,
+                   SurfaceHolding holding = SurfaceHolding::halfedges_where_possible);
+  // From a grid file: `mesh` as read (before any flip) and what was computed from it on its
+  // halfedges. The
+  // face normals are made again from the corners (a per-face formula, the same bits), the
+  // rest is taken as stored after checking its sizes and indices (InputError otherwise).
+  ReferenceSurface(Mesh mesh, const std::string& source, StoredSurface stored);
 
   std::size_t triangle_count() const { return corners_.size(); }
   Vec3 origin() const { return origin_; }
@@ -57,22 +89,30 @@ class ReferenceSurface {
 
   // Topology of the mesh as given (before any flip).
   const TopologyReport& topology() const { return topology_; }
+  // True when the mesh was held as an OpenMesh TriMesh (see above).
+  bool on_halfedges() const { return on_halfedges_; }
+  // The boundary loops of an open surface held on halfedges, in model coordinates (read from
+  // a grid file: the first 100 of them); their number.
+  const std::vector<BoundaryLoop>& boundary_loops() const { return boundary_loops_; }
+  std::uint64_t boundary_loop_count() const { return boundary_loop_count_; }
+  const Pseudonormals& normals() const { return normals_; }
   bool flipped() const { return flipped_; }
   // SignMethod::pseudonormal or SignMethod::winding, and why when winding.
   SignMethod automatic_sign_method() const { return automatic_sign_; }
   const std::string& winding_reason() const { return winding_reason_; }
 
   // Unit normal, or zero for a degenerate face.
-  Vec3 face_normal(std::size_t triangle) const { return face_normals_[triangle]; }
+  Vec3 face_normal(std::size_t triangle) const { return normals_.face[triangle]; }
   // Unit pseudonormal of a feature of a triangle; zero when it has none (only degenerate
   // faces around it, or faces that cancel).
   Vec3 pseudonormal(std::size_t triangle, TriangleFeature feature) const;
 
  private:
+  void enter_local_frame(Mesh mesh, const std::string& source);
   void orient_outward(const std::string& source);
   void choose_sign_method(const std::string& source);
   void copy_corners();
-  void compute_normals(const EdgeIncidence& incidence);
+  void compute_normals(EdgeIncidence& incidence, SurfaceHolding holding);
 
   Vec3 origin_{0, 0, 0};
   Mesh local_;
@@ -82,10 +122,10 @@ class ReferenceSurface {
   bool flipped_ = false;
   SignMethod automatic_sign_ = SignMethod::pseudonormal;
   std::string winding_reason_;
-  Buffer<Vec3> face_normals_;
-  std::vector<Vec3> vertex_normals_;
-  std::vector<Vec3> edge_normals_;
-  std::vector<std::uint32_t> edge_of_slot_;
+  bool on_halfedges_ = false;
+  std::vector<BoundaryLoop> boundary_loops_;
+  std::uint64_t boundary_loop_count_ = 0;
+  Pseudonormals normals_;
 };
 
 }  // namespace ncv

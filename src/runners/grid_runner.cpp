@@ -1,6 +1,9 @@
 #include "runners/grid_runner.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
+
+#include <algorithm>
 
 #include "files/grid_file.hpp"
 #include "mesh/mesh_reader.hpp"
@@ -10,13 +13,56 @@
 
 namespace ncv {
 
-IndexedSurface index_surface(Mesh mesh, const std::string& source, const GridOptions& options) {
+IndexedSurface index_surface(Mesh mesh, const std::string& source, const GridOptions& options,
+                             SurfaceHolding holding) {
   Stopwatch clock;
   IndexedSurface indexed;
-  indexed.reference = index_reference(std::move(mesh), source, options, &indexed.statistics);
+  indexed.reference =
+      index_reference(std::move(mesh), source, options, &indexed.statistics, holding);
   indexed.seconds = clock.seconds();
   return indexed;
 }
+
+namespace {
+
+// The loops logged one line each; the grid file's header lists the first 100.
+constexpr std::size_t kLoggedLoops = 10;
+
+std::string format_point(Vec3 p) {
+  return fmt::format("({:.6g}, {:.6g}, {:.6g})", p[0], p[1], p[2]);
+}
+
+// Where an open nominal is open: its holes, each with its length and where it is, so a
+// missing face can be found in CAD (docs/METHOD.md: an open nominal is signed by the
+// winding number).
+void log_boundary_loops(const IndexedReference& g) {
+  const ReferenceSurface& surface = *g.surface;
+  const TopologyReport& t = surface.topology();
+  if (t.boundary_edges == 0) return;
+  if (!surface.on_halfedges()) {
+    spdlog::info(
+        "{}: {} boundary edges; loops not traced (OpenMesh cannot hold this mesh as it is)",
+        g.source, t.boundary_edges);
+    return;
+  }
+  const std::uint64_t count = surface.boundary_loop_count();
+  spdlog::info("{}: open: {} boundary loop{} of {} edges in all", g.source, count,
+               count == 1 ? "" : "s", t.boundary_edges);
+  const auto& loops = surface.boundary_loops();
+  for (std::size_t i = 0; i < std::min(loops.size(), kLoggedLoops); ++i) {
+    const BoundaryLoop& loop = loops[i];
+    spdlog::info("  loop {}: {} edges, length {:.6g}, through {}, box {} to {}", i + 1, loop.edges,
+                 loop.length, format_point(loop.start), format_point(loop.box.min),
+                 format_point(loop.box.max));
+  }
+  if (count > kLoggedLoops) {
+    spdlog::info(
+        "  and {} more loops (the grid file's header lists the first {}: ncverify inspect)",
+        count - kLoggedLoops, std::min<std::uint64_t>(count, 100));
+  }
+}
+
+}  // namespace
 
 void log_grid(const IndexedSurface& indexed) {
   const IndexedReference& g = indexed.reference;
@@ -28,6 +74,7 @@ void log_grid(const IndexedSurface& indexed) {
       g.source, g.mesh.triangle_count(), g.mesh.vertex_count(), t.closed() ? "yes" : "no",
       t.manifold() ? "yes" : "no", t.consistently_oriented() ? "yes" : "no",
       name_of(kSignMethodNames, g.surface->automatic_sign_method()));
+  log_boundary_loops(g);
   spdlog::debug(
       "{}: {} edges, {} boundary, {} used by three or more triangles, {} misoriented; {} "
       "non-manifold vertices, {} degenerate and {} duplicate triangles; signed volume {} "

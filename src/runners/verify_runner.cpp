@@ -108,8 +108,11 @@ DistanceSet measure_direction(Mesh sampled_mesh, const std::string& sampled_sour
                               Direction direction, const StepHooks& hooks) {
   SampledSurface sampled = sample_surface(std::move(sampled_mesh), sampled_source, sampling);
   if (hooks.sampled) hooks.sampled(sampled, direction);
+  // The reverse direction's reference, the workpiece, on the arrays (reference_surface.hpp).
   const IndexedSurface indexed =
-      index_surface(std::move(reference_mesh), reference_source, options.grid);
+      index_surface(std::move(reference_mesh), reference_source, options.grid,
+                    direction == Direction::reverse ? SurfaceHolding::arrays
+                                                    : SurfaceHolding::halfedges_where_possible);
   if (hooks.indexed) hooks.indexed(indexed, direction);
   DistanceOptions distance = options.distance;
   distance.direction = direction;

@@ -3,12 +3,12 @@
 namespace ncv {
 
 IndexedReference index_reference(Mesh mesh, const std::string& source, const GridOptions& options,
-                                 GridStatistics* statistics) {
+                                 GridStatistics* statistics, SurfaceHolding holding) {
   IndexedReference reference;
   reference.source = source;
   reference.mesh = std::move(mesh);
   reference.hash = mesh_hash(reference.mesh);
-  reference.surface = std::make_unique<ReferenceSurface>(reference.mesh, source);
+  reference.surface = std::make_unique<ReferenceSurface>(reference.mesh, source, holding);
   reference.grid = build_background_grid(*reference.surface, options, statistics);
   return reference;
 }

@@ -27,6 +27,7 @@ struct IndexedReference {
 // Prepares the surface (topology, orientation, sign method) and builds its grid.
 IndexedReference index_reference(Mesh mesh, const std::string& source,
                                  const GridOptions& options = {},
-                                 GridStatistics* statistics = nullptr);
+                                 GridStatistics* statistics = nullptr,
+                                 SurfaceHolding holding = SurfaceHolding::halfedges_where_possible);
 
 }  // namespace ncv

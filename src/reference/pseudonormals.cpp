@@ -1,0 +1,172 @@
+#include "reference/pseudonormals.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+namespace ncv {
+namespace {
+
+template <class Body>
+void parallel_over(std::size_t count, std::size_t grain, Body body) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, grain),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i != range.end(); ++i) body(i);
+                    });
+}
+
+double corner_angle(Vec3 apex, Vec3 b, Vec3 c) {
+  const Vec3 u = b - apex;
+  const Vec3 v = c - apex;
+  return std::atan2(norm(cross(u, v)), dot(u, v));
+}
+
+bool is_zero(Vec3 v) {
+  return v == Vec3(0, 0, 0);  // a real unit normal is never zero
+}
+
+Vec3 face_normal(Vec3 a, Vec3 b, Vec3 c) {
+  return is_degenerate_triangle(a, b, c) ? Vec3(0, 0, 0) : normalized(cross(b - a, c - a));
+}
+
+// One face's share of a vertex pseudonormal.
+struct Term {
+  int face;
+  Vec3 value;
+};
+constexpr std::size_t kStackTerms = 16;
+
+void normalize_all(std::vector<Vec3>& vectors) {
+  parallel_over(vectors.size(), 1 << 14,
+                [&](std::size_t i) { vectors[i] = normalized(vectors[i]); });
+}
+
+}  // namespace
+
+Buffer<Vec3> face_normals(std::span<const TriangleCorners> corners) {
+  Buffer<Vec3> normals(corners.size());
+  parallel_over(corners.size(), 1 << 12, [&](std::size_t t) {
+    normals[t] = face_normal(corners[t][0], corners[t][1], corners[t][2]);
+  });
+  return normals;
+}
+
+// Per face its corners from its halfedges (the first runs from corner 0 to corner 1), its
+// normal and its angle at each corner, kept with the halfedge leaving that corner; per vertex
+// its faces from its outgoing halfedges; per edge its faces from its two halfedges: every
+// element on its own, so all three loops run in parallel. A vertex's terms are sorted by
+// face before they are added, as the arrays' triangle-order loop adds them. The angles are
+// computed in the face loop, which reads each face's corners once in order, rather than in
+// the vertex loop, which would fetch two more points per face around every vertex (that
+// loop was the slowest part of the grid step's normals).
+Pseudonormals halfedge_pseudonormals(const TriMesh& mesh, const EdgeIncidence& incidence) {
+  Pseudonormals normals;
+  normals.face.resize(mesh.n_faces());
+  Buffer<double> angle_at(mesh.n_halfedges());  // of the face of halfedge h at its start
+  parallel_over(mesh.n_faces(), 1 << 12, [&](std::size_t f) {
+    const auto h0 = mesh.halfedge_handle(TriMesh::FaceHandle(static_cast<int>(f)));
+    const auto h1 = mesh.next_halfedge_handle(h0);
+    const auto h2 = mesh.next_halfedge_handle(h1);
+    const Vec3 a = mesh.point(mesh.from_vertex_handle(h0));
+    const Vec3 b = mesh.point(mesh.to_vertex_handle(h0));
+    const Vec3 c = mesh.point(mesh.to_vertex_handle(h1));
+    normals.face[f] = face_normal(a, b, c);
+    if (is_zero(normals.face[f])) return;
+    angle_at[static_cast<std::size_t>(h0.idx())] = corner_angle(a, b, c);
+    angle_at[static_cast<std::size_t>(h1.idx())] = corner_angle(b, c, a);
+    angle_at[static_cast<std::size_t>(h2.idx())] = corner_angle(c, a, b);
+  });
+
+  normals.vertex.resize(mesh.n_vertices());
+  parallel_over(mesh.n_vertices(), 1 << 12, [&](std::size_t v) {
+    const auto vertex = TriMesh::VertexHandle(static_cast<int>(v));
+    // A vertex has a handful of faces: their terms on the stack, the rare crowded vertex on
+    // the heap (an allocation per vertex cost as much as the sums).
+    std::array<Term, kStackTerms> stack_terms;
+    std::vector<Term> heap_terms;
+    std::size_t count = 0;
+    // Around the vertex by hand (clockwise: after outgoing h comes next(opposite(h))), the
+    // step count bounded so that no structure can loop forever.
+    const TriMesh::HalfedgeHandle first = mesh.halfedge_handle(vertex);
+    TriMesh::HalfedgeHandle h = first;
+    for (std::size_t steps = 0; first.is_valid() && steps < mesh.n_halfedges(); ++steps) {
+      const int face = mesh.face_handle(h).idx();
+      if (face >= 0 && !is_zero(normals.face[static_cast<std::size_t>(face)])) {
+        const Term term{face, angle_at[static_cast<std::size_t>(h.idx())] *
+                                  normals.face[static_cast<std::size_t>(face)]};
+        if (count == kStackTerms) heap_terms.assign(stack_terms.begin(), stack_terms.end());
+        if (count >= kStackTerms) {
+          heap_terms.push_back(term);
+        } else {
+          stack_terms[count] = term;
+        }
+        ++count;
+      }
+      h = mesh.next_halfedge_handle(mesh.opposite_halfedge_handle(h));
+      if (h == first) break;
+    }
+    const std::span<Term> terms = count > kStackTerms ? std::span<Term>(heap_terms)
+                                                      : std::span<Term>(stack_terms.data(), count);
+    std::sort(terms.begin(), terms.end(),
+              [](const Term& a, const Term& b) { return a.face < b.face; });
+    Vec3 sum(0, 0, 0);
+    for (const Term& term : terms) sum += term.value;
+    normals.vertex[v] = normalized(sum);
+  });
+
+  normals.edge.resize(mesh.n_edges());
+  parallel_over(mesh.n_edges(), 1 << 14, [&](std::size_t e) {
+    std::array<int, 2> faces{};
+    for (int side = 0; side < 2; ++side) {
+      faces[side] = mesh.face_handle(TriMesh::HalfedgeHandle(static_cast<int>(2 * e + side))).idx();
+    }
+    std::sort(faces.begin(), faces.end());
+    Vec3 sum(0, 0, 0);
+    for (const int face : faces) {
+      if (face >= 0 && !is_zero(normals.face[static_cast<std::size_t>(face)])) {
+        sum += normals.face[static_cast<std::size_t>(face)];
+      }
+    }
+    normals.edge[e] = normalized(sum);
+  });
+  normals.edge_of_slot = incidence.edge_of_slot;
+  return normals;
+}
+
+// Face normals and corner angles in parallel; the angle-weighted sums stay serial, in
+// triangle order, so they do not depend on the thread count. The angles are kept rather
+// than their products with the normal: a third of the memory to write and read.
+Pseudonormals array_pseudonormals(const Mesh& mesh, std::span<const TriangleCorners> corners,
+                                  const EdgeIncidence& incidence) {
+  Pseudonormals normals;
+  const std::size_t triangles = mesh.triangle_count();
+  normals.face = face_normals(corners);
+  normals.vertex.assign(mesh.vertex_count(), Vec3(0, 0, 0));
+  normals.edge.assign(incidence.edge_count(), Vec3(0, 0, 0));
+  normals.edge_of_slot = incidence.edge_of_slot;
+  Buffer<std::array<double, 3>> corner_angles(triangles);
+  parallel_over(triangles, 1 << 12, [&](std::size_t t) {
+    if (is_zero(normals.face[t])) return;
+    const auto& [a, b, c] = corners[t];
+    corner_angles[t] = {corner_angle(a, b, c), corner_angle(b, c, a), corner_angle(c, a, b)};
+  });
+  for (std::size_t t = 0; t < triangles; ++t) {
+    const Vec3 n = normals.face[t];
+    if (is_zero(n)) continue;
+    const Triangle& tri = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) normals.vertex[tri[k]] += corner_angles[t][k] * n;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::uint32_t edge = normals.edge_of_slot[3 * t + k];
+      if (edge != kNoEdge) normals.edge[edge] += n;
+    }
+  }
+  normalize_all(normals.vertex);
+  normalize_all(normals.edge);
+  return normals;
+}
+
+}  // namespace ncv
