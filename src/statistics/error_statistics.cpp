@@ -35,14 +35,16 @@ struct TriangleCounts {
   std::uint64_t unsampled = 0;
 };
 
-void count_triangles(const SampleSet& samples, ErrorStatistics& stats) {
+// areas: each triangle's area, as triangle_area gives it (lattice_patches keeps them).
+void count_triangles(const SampleSet& samples, std::span<const double> areas,
+                     ErrorStatistics& stats) {
   const Mesh& mesh = samples.mesh;
   const TriangleCounts counts = ordered_reduce(
       mesh.triangle_count(), kPatchBlock, TriangleCounts{},
       [&](std::size_t begin, std::size_t end) {
         TriangleCounts part;
         for (std::size_t t = begin; t < end; ++t) {
-          const double area = triangle_area(mesh, t);
+          const double area = areas[t];
           part.area += area;
           if (samples.lattice_sizes[t] == 0) {
             ++part.unsampled;
@@ -164,10 +166,11 @@ ErrorStatistics compute_error_statistics(const SampleSet& samples, std::span<con
   check_distances(samples, d);
   ErrorStatistics stats;
   stats.samples = d.size();
-  count_triangles(samples, stats);
+  std::vector<double> triangle_areas;
+  const Buffer<LinearPatch> patches = lattice_patches(samples, d, &triangle_areas);
+  count_triangles(samples, triangle_areas, stats);
   find_extremes(samples, d, stats);
 
-  const Buffer<LinearPatch> patches = lattice_patches(samples, d);
   compute_moments(patches, stats);
   if (tolerance) stats.tolerance = clip_to_tolerance(patches, *tolerance, stats);
   stats.histogram = area_histogram(
