@@ -19,6 +19,7 @@ import time
 
 NCV, MICRO, LARGE = sys.argv[1], sys.argv[2], sys.argv[3]
 PROFILE = sys.argv[4] if len(sys.argv) > 4 else ""  # ncverify_search_profile
+EMBREE = sys.argv[5] if len(sys.argv) > 5 else ""  # the Embree harness, embree_sd
 REPS = int(os.environ.get("NCV_BENCH_REPS", "3"))
 QUICK = os.environ.get("NCV_BENCH_QUICK") == "1"
 STAGES = [("roughing", "core_roughing.stl"), ("semifinishing", "core_semifinishing.stl"),
@@ -47,13 +48,13 @@ PAPER_T2 = {"roughing": (56.5, 302), "semifinishing": (55.1, 310), "finishing": 
 PHASES = ["read", "sample", "grid-build", "distance", "stats", "colorize", "write"]
 
 
-def run(workpiece, nominal, threads, scheme="all", step="0.1%"):
+def run(workpiece, nominal, threads, scheme="all", step="0.1%", extra=()):
     """One `ncverify run`; returns (timings, report) and removes its outputs."""
     with tempfile.TemporaryDirectory(dir=os.environ.get("NCV_BENCH_TMP")) as tmp:
         timings = os.path.join(tmp, "timings.json")
         cmd = [NCV, "-q", "-j", str(threads), "run", workpiece, nominal, "-d",
                os.path.join(tmp, "out"), "--scheme", scheme, "--step", step, "--format", "json",
-               "--timings", timings, "--force"]
+               "--timings", timings, "--force", *extra]
         out = subprocess.run(cmd, stdout=subprocess.PIPE, check=False)
         if out.returncode not in (0, 1):
             sys.exit(f"bench: {' '.join(cmd)} failed ({out.returncode})")
@@ -169,6 +170,51 @@ def micro():
                                    cpu_ms=b["cpu_time"], tested=b["triangles/query"],
                                    considered=b["considered/query"])
     return result
+
+
+def sample_points(workpiece, path):
+    """The workpiece's samples (run's sampling: scheme I, δ = 0.1 %) as raw float64 x, y, z
+    triples, regenerated from a samples file by docs/read_ncverify.py; returns their count."""
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "docs"))
+    from read_ncverify import read_ncverify, sample_points as points_of  # numpy
+    samples = path + ".samples"
+    subprocess.run([NCV, "-q", "sample", workpiece, "-o", samples], check=True)
+    positions, _ = points_of(read_ncverify(samples)[3])
+    positions.astype("<f8").tofile(path)
+    os.remove(samples)
+    return len(positions)
+
+
+def embree_rate(nominal, points, threads):
+    """The Embree harness's query rate (points per second) on the points, one run."""
+    with tempfile.TemporaryDirectory(dir=os.environ.get("NCV_BENCH_TMP")) as tmp:
+        out = subprocess.run([EMBREE, nominal, points, os.path.join(tmp, "d.f64"), "--threads",
+                              str(threads)], stdout=subprocess.PIPE, text=True, check=True).stdout
+    return float(re.search(r"points_per_s=([0-9.]+)", out).group(1))
+
+
+def yardstick(stages):
+    """Per stage and thread count: ncverify's distance phase (forward, in `run`) and the Embree
+    harness on the same samples, taken in turn REPS times; the medians and the median of the
+    rounds' ratios (ncverify samples/s over Embree points/s)."""
+    rows = []
+    with tempfile.TemporaryDirectory(dir=os.environ.get("NCV_BENCH_TMP")) as tmp:
+        for family, stage, workpiece, nominal in stages:
+            points = os.path.join(tmp, "points.f64")
+            count = sample_points(workpiece, points)
+            for threads in (1, 2):
+                ours, theirs, ratios, tested = [], [], [], 0
+                for _ in range(REPS):
+                    t, _r = run(workpiece, nominal, threads, extra=("--one-sided",))
+                    if t["samples"] != count:
+                        sys.exit(f"bench: {count} points written for {t['samples']} samples")
+                    ours.append(t["samples"] / t["phases"]["distance"])
+                    theirs.append(embree_rate(nominal, points, threads))
+                    ratios.append(ours[-1] / theirs[-1])
+                    tested = t["triangles_tested_per_sample"]
+                rows.append((family, stage, count, threads, statistics.median(ours),
+                             statistics.median(theirs), statistics.median(ratios), tested))
+    return rows
 
 
 def ns_per_sample(t):
@@ -352,6 +398,22 @@ def main():
           f"ns, {b / a:.2f}; with a perfect hint {b_perfect:.0f} / {a_perfect:.0f} ns, "
           f"{b_perfect / a_perfect:.2f}")
     p("")
+    if os.path.exists(EMBREE):
+        p("== The yardstick: distance phase per sample, ncverify (run, forward) vs the Embree "
+          "harness (../shared/tools/embree_sd), same samples, taken in turn; median of "
+          f"{REPS} ==")
+        p(f"{'family':<8}{'stage':<15}{'samples':>10}{'threads':>8}{'ncverify M/s':>13}"
+          f"{'Embree M/s':>11}{'ratio':>7}{'tested':>8}")
+        for family, stage, count, threads, ours, theirs, ratio, tested in yardstick(
+                [("ncgen", stage, os.path.join(LARGE, file), NOMINAL) for stage, file in STAGES]):
+            p(f"{family:<8}{stage:<15}{count:>10}{threads:>8}{ours / 1e6:>13.2f}"
+              f"{theirs / 1e6:>11.2f}{ratio:>6.2f}x{tested:>8.2f}")
+        p("  goal (issue 24): ratio >= 5 on 2 threads, every stage; 1 thread no worse than 2")
+        p("")
+    else:
+        p("(the Embree harness was not built: no yardstick; scripts/bench.sh builds it where "
+          "libembree-dev is installed)")
+        p("")
     p("== Finishing phases, 1 vs 2 threads (median of runs, s) ==")
     p(f"{'threads':<8}" + "".join(f"{ph:>11}" for ph in PHASES) + f"{'total':>9}")
     for label, t in (("1", fin1), ("2", fin2)):

@@ -33,5 +33,14 @@ fi
 [ -f "$large/core_nominal_1700k.stl" ] ||
   "$ncgen" nominal -o "$large/core_nominal_1700k.stl" --tolerance 0.0003 --level 11 >&2
 
+# The yardstick: the Embree harness beside the repository (../shared/tools/embree_sd), built
+# into build-embree/ where libembree-dev is installed; without it the table says so.
+embree_src=../shared/tools/embree_sd
+embree=build-embree/embree_sd
+if [ -f "$embree_src/CMakeLists.txt" ]; then
+  cmake -S "$embree_src" -B build-embree -DCMAKE_BUILD_TYPE=Release >&2 &&
+    cmake --build build-embree >&2 || echo "bench: the Embree harness did not build" >&2
+fi
+
 exec /usr/bin/python3 bench/bench_table.py "$build/ncverify" "$micro" "$large" \
-  "$build/bench/ncverify_search_profile"
+  "$build/bench/ncverify_search_profile" "$embree"

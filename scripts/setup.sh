@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 packages=(
   build-essential cmake ninja-build pkg-config git
   libopenmesh-dev libcli11-dev libspdlog-dev libfmt-dev catch2 libtbb-dev jq
-  nlohmann-json3-dev libxxhash-dev libbenchmark-dev
+  nlohmann-json3-dev libxxhash-dev libbenchmark-dev libembree-dev
   clang lld libclang-rt-14-dev clang-format python3 python3-numpy time
   chromium
   slurm-wlm munge parallel

@@ -31,12 +31,33 @@ constexpr double squared_integral(const LinearPatch& p, double shift = 0) {
   return p.area / 6 * (a * a + b * b + c * c + a * b + b * c + c * a);
 }
 
+// The closed form for lo <= t < hi: hi > lo, and the denominator of the branch taken is
+// positive (t < mid implies mid > lo, t >= mid implies hi > mid).
+inline double area_strictly_inside(const LinearPatch& p, double t) {
+  if (t < p.mid) {
+    const double rise = t - p.lo;
+    return p.area * (rise / (p.mid - p.lo)) * (rise / (p.hi - p.lo));
+  }
+  const double fall = p.hi - t;
+  return p.area - p.area * (fall / (p.hi - p.lo)) * (fall / (p.hi - p.mid));
+}
+
 // Area where the field is <= t. The sublevel set is a corner triangle (t below the middle
 // value) or the complement of one (t above it), whose area scales with the product of the
-// two edge fractions cut off.
-double area_at_most(const LinearPatch& p, double t);
+// two edge fractions cut off. Inline: the statistics evaluate it millions of times a part.
+inline double area_at_most(const LinearPatch& p, double t) {
+  if (t < p.lo) return 0;
+  if (t >= p.hi) return p.area;
+  return area_strictly_inside(p, t);
+}
+
 // Area where the field is < t; differs from area_at_most only for a constant patch at t.
-double area_below(const LinearPatch& p, double t);
+inline double area_below(const LinearPatch& p, double t) {
+  if (t <= p.lo) return 0;
+  if (t >= p.hi) return p.area;
+  return area_strictly_inside(p, t);
+}
+
 inline double area_above(const LinearPatch& p, double t) {
   return p.area - area_at_most(p, t);
 }

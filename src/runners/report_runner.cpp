@@ -5,6 +5,8 @@
 
 #include <sstream>
 
+#include <tbb/parallel_invoke.h>
+
 #include "files/distance_job.hpp"
 #include "render/svg_histogram.hpp"
 #include "util/error.hpp"
@@ -31,8 +33,12 @@ Traceability traceability(const std::string& command_line) {
 
 VerificationReport make_verification_report(const DistanceSet& main, const DistanceSet* reverse,
                                             const ReportOptions& options) {
-  VerificationReport report{make_report(main, options), std::nullopt, {}};
-  if (reverse) report.reverse = make_report(*reverse, options);
+  // The two directions are independent: made side by side.
+  VerificationReport report;
+  tbb::parallel_invoke([&] { report.main = make_report(main, options); },
+                       [&] {
+                         if (reverse) report.reverse = make_report(*reverse, options);
+                       });
   return report;
 }
 

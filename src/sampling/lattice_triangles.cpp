@@ -10,18 +10,33 @@ double lattice_triangle_area(const SampleSet& samples, std::size_t t) {
   return triangle_area(samples.mesh, t) / (steps * steps);
 }
 
-Buffer<LinearPatch> lattice_patches(const SampleSet& samples, std::span<const double> d) {
+Buffer<LinearPatch> lattice_patches(const SampleSet& samples, std::span<const double> d,
+                                    std::vector<double>* triangle_areas) {
   const std::size_t triangles = samples.lattice_sizes.size();
   std::vector<std::uint64_t> first(triangles + 1, 0);
   for (std::size_t t = 0; t < triangles; ++t) {
     first[t + 1] = first[t] + lattice_triangle_count(samples.lattice_sizes[t]);
   }
+  if (triangle_areas) triangle_areas->resize(triangles);
   Buffer<LinearPatch> patches(first[triangles]);
+  const Mesh& mesh = samples.mesh;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles, 1024), [&](const auto& range) {
     for (std::size_t t = range.begin(); t != range.end(); ++t) {
-      if (samples.lattice_sizes[t] < 2) continue;
-      const double area = lattice_triangle_area(samples, t);
+      const std::uint32_t n = samples.lattice_sizes[t];
+      if (n < 2 && !triangle_areas) continue;
+      const double whole = triangle_area(mesh, t);
+      if (triangle_areas) (*triangle_areas)[t] = whole;
+      if (n < 2) continue;
       LinearPatch* out = patches.data() + first[t];
+      if (n == 2) {  // most triangles of a fine mesh: one sub-triangle, the corners' samples
+        const auto& corner = mesh.triangles[t];
+        *out = make_linear_patch(whole, d[samples.vertex_sample[corner[0]]],
+                                 d[samples.vertex_sample[corner[1]]],
+                                 d[samples.vertex_sample[corner[2]]]);
+        continue;
+      }
+      const double steps = n - 1.0;
+      const double area = whole / (steps * steps);  // lattice_triangle_area
       for_each_lattice_triangle(samples, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
         *out++ = make_linear_patch(area, d[a], d[b], d[c]);
       });

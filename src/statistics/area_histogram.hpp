@@ -36,4 +36,21 @@ struct Histogram {
 Histogram area_histogram(std::span<const LinearPatch> patches, ValueRange range,
                          std::uint32_t bins);
 
+// area_histogram in pieces, for a pass over the patches shared with other measures: the sums
+// of each block of patches (in the blocks area_histogram uses, kHistogramBlock patches),
+// combined in block order, give area_histogram's histogram to the bit.
+inline constexpr std::size_t kHistogramBlock = std::size_t{1} << 16;
+class HistogramSums {
+ public:
+  HistogramSums(ValueRange range, std::uint32_t bins);  // throws as area_histogram
+  std::vector<double> zero() const;
+  std::vector<double> block(std::span<const LinearPatch> patches) const;
+  static void combine(std::vector<double>& acc, const std::vector<double>& part);
+  Histogram histogram(const std::vector<double>& sums) const;
+
+ private:
+  Histogram empty_;
+  std::vector<double> edges_;
+};
+
 }  // namespace ncv

@@ -1,11 +1,14 @@
 #include "statistics/area_quantiles.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
+#include "statistics/rank_selection.hpp"
 #include "util/ordered_reduce.hpp"
 
 namespace ncv {
@@ -17,6 +20,19 @@ constexpr std::size_t kPatchBlock = 1 << 16;
 // values inside the bracket, so a few steps reach a bracket free of them.
 constexpr std::size_t kSplits = 32;
 
+// std::lower_bound over the few split points without a branch to mispredict: the patches'
+// corner values fall anywhere among them.
+std::size_t lower_bound_index(const std::vector<double>& splits, double x) {
+  const double* base = splits.data();
+  std::size_t length = splits.size();
+  while (length > 1) {
+    const std::size_t half = length / 2;
+    base = base[half - 1] < x ? base + half : base;
+    length -= half;
+  }
+  return static_cast<std::size_t>(base - splits.data()) + (length == 1 && *base < x ? 1 : 0);
+}
+
 // Distribution function at each split point (ascending): patches wholly at or below a
 // split add their whole area from there on, patches straddling it their closed form.
 std::vector<double> area_at_most_each(std::span<const LinearPatch> patches,
@@ -27,12 +43,23 @@ std::vector<double> area_at_most_each(std::span<const LinearPatch> patches,
       patches.size(), kPatchBlock, Sums(2 * m + 1, 0.0),
       [&](std::size_t begin, std::size_t end) {
         Sums part(2 * m + 1, 0.0);
+        // Neighbouring patches mostly lie between the same two splits, (low, high]: then
+        // both searches would give `last` and the patch adds its whole area there.
+        std::size_t last = 0;
+        double low = -std::numeric_limits<double>::infinity(), high = low;
         for (std::size_t i = begin; i < end; ++i) {
           const LinearPatch& p = patches[i];
-          const auto first = std::lower_bound(splits.begin(), splits.end(), p.lo);
-          const auto whole = std::lower_bound(first, splits.end(), p.hi);
-          for (auto s = first; s != whole; ++s) part[s - splits.begin()] += area_at_most(p, *s);
-          part[m + static_cast<std::size_t>(whole - splits.begin())] += p.area;
+          if (low < p.lo && p.hi <= high) {
+            part[m + last] += p.area;
+            continue;
+          }
+          const std::size_t first = lower_bound_index(splits, p.lo);
+          const std::size_t whole = lower_bound_index(splits, p.hi);
+          for (std::size_t s = first; s < whole; ++s) part[s] += area_at_most(p, splits[s]);
+          part[m + whole] += p.area;
+          last = whole;
+          low = whole > 0 ? splits[whole - 1] : -std::numeric_limits<double>::infinity();
+          high = whole < m ? splits[whole] : std::numeric_limits<double>::infinity();
         }
         return part;
       },
@@ -128,6 +155,43 @@ void narrow(Bracket& bracket, std::span<const LinearPatch> patches, double a, do
   for (const LinearPatch& p : patches) add_to_bracket(bracket, p);
 }
 
+// The first narrowing of up to N fresh brackets in one pass over all patches: what narrow()
+// does for each, in the same patch order, so every sum is narrow()'s to the bit. Most patches
+// lie wholly below or above a bracket; the bases, kept in registers, take the area of those
+// below without a branch (adding +0.0 leaves a sum of areas as it is).
+template <std::size_t N>
+void narrow_together(std::span<Bracket> brackets, std::span<const LinearPatch> patches) {
+  std::array<double, N> a{}, b{}, base{};
+  for (std::size_t k = 0; k < N; ++k) {
+    a[k] = brackets[k].a;
+    b[k] = brackets[k].b;
+  }
+  for (const LinearPatch& p : patches) {
+    for (std::size_t k = 0; k < N; ++k) {
+      const bool below = p.hi <= a[k];
+      base[k] += below ? p.area : 0.0;
+      if (!below && p.lo < b[k]) add_to_bracket(brackets[k], p);
+    }
+  }
+  for (std::size_t k = 0; k < N; ++k) brackets[k].base = base[k];
+}
+
+void narrow_fresh(std::span<Bracket> brackets, std::span<const LinearPatch> patches) {
+  for (; brackets.size() >= 3; brackets = brackets.subspan(3)) {
+    narrow_together<3>(brackets.first(3), patches);
+  }
+  if (brackets.size() == 2) narrow_together<2>(brackets, patches);
+  if (brackets.size() == 1) narrow_together<1>(brackets, patches);
+}
+
+// Every fresh bracket narrowed over all patches: in two halves side by side, each half's
+// brackets sharing their passes over the patches.
+void narrow_all(std::span<Bracket> brackets, std::span<const LinearPatch> patches) {
+  const std::size_t half = (brackets.size() + 1) / 2;
+  tbb::parallel_invoke([&] { narrow_fresh(brackets.first(half), patches); },
+                       [&] { narrow_fresh(brackets.subspan(half), patches); });
+}
+
 // With no corner value inside (a, b), F is base + spanning there: bisect it.
 double solve_in_bracket(const Bracket& bracket, double target) {
   const auto at = [&](double t) { return bracket.base + bracket.spanning(t - bracket.a); };
@@ -162,28 +226,9 @@ double quantile_in(Bracket bracket, std::span<const double> sorted, double targe
   }
 }
 
-// Puts the values of the given ranks (ascending) at their sorted positions, every other
-// value between the ranks it lies between: a multi-way nth_element, splitting at the
-// middle rank and recursing, in O(n log ranks) instead of a full sort.
-void select_ranks(std::span<double> values, std::span<const std::size_t> ranks,
-                  std::size_t offset) {
-  if (ranks.empty()) return;
-  const std::size_t middle = ranks.size() / 2;
-  const std::size_t at = ranks[middle] - offset;
-  std::nth_element(values.begin(), values.begin() + at, values.end());
-  select_ranks(values.first(at), ranks.first(middle), offset);
-  select_ranks(values.subspan(at + 1), ranks.subspan(middle + 1), offset + at + 1);
-}
-
 // The first step's split points: the smallest value, so that every fraction beyond an atom
-// there has a lower end to its bracket, then values spread evenly by rank; each with the
-// position it holds in the selected array.
-struct RankSplits {
-  std::vector<double> values;
-  std::vector<std::size_t> positions;
-};
-
-RankSplits first_splits(std::vector<double>& values) {
+// there has a lower end to its bracket, then values spread evenly by rank.
+std::vector<double> first_splits(std::span<const double> values) {
   const std::size_t count = values.size();
   const std::size_t wanted = std::min(count, kSplits);
   std::vector<std::size_t> ranks{0};
@@ -191,14 +236,21 @@ RankSplits first_splits(std::vector<double>& values) {
     const std::size_t rank = (count * k) / wanted - 1;
     if (rank > ranks.back()) ranks.push_back(rank);
   }
-  select_ranks(values, ranks, 0);
-  RankSplits splits;
-  for (const std::size_t rank : ranks) {
-    if (!splits.values.empty() && values[rank] == splits.values.back()) continue;
-    splits.values.push_back(values[rank]);
-    splits.positions.push_back(rank);
+  std::vector<double> splits;
+  for (const double value : values_at_ranks(values, ranks)) {
+    if (splits.empty() || value != splits.back()) splits.push_back(value);
   }
   return splits;
+}
+
+// The corner values strictly inside (a, b), ascending, each plus +0.0 (as the splits).
+std::vector<double> values_inside(std::span<const double> values, double a, double b) {
+  std::vector<double> inside;
+  for (const double v : values) {
+    if (a < v && v < b) inside.push_back(v + 0.0);
+  }
+  std::sort(inside.begin(), inside.end());
+  return inside;
 }
 
 }  // namespace
@@ -208,31 +260,44 @@ std::vector<double> area_quantiles(std::span<const LinearPatch> patches,
                                    std::span<const double> fractions) {
   std::vector<double> result(fractions.size(), std::numeric_limits<double>::quiet_NaN());
   if (values.empty()) return result;
-  // Adding +0.0 turns -0.0 into +0.0: equal values are then equal bit patterns, and no
-  // result can come out as a negative zero.
-  std::vector<double> selected(values.size());
-  std::transform(values.begin(), values.end(), selected.begin(), [](double v) { return v + 0.0; });
-  const RankSplits splits = first_splits(selected);
+  // The splits come out plus +0.0 (-0.0 as +0.0): equal values are then equal bit patterns,
+  // and no result can come out as a negative zero.
+  const std::vector<double> split_values = first_splits(values);
   // The first step runs over all patches once, shared by every fraction.
-  const std::vector<double> at_most = area_at_most_each(patches, splits.values);
+  const std::vector<double> at_most = area_at_most_each(patches, split_values);
   const double total = at_most.back();
   if (!(total > 0)) return result;
-  tbb::parallel_for(std::size_t{0}, fractions.size(), [&](std::size_t f) {
+  // Each fraction's first bracket: (splits[j - 1], splits[j]), j = 0 when the fraction lies
+  // at the smallest value. Fractions sharing a bracket share its narrowing.
+  std::vector<std::size_t> first_bracket(fractions.size());
+  for (std::size_t f = 0; f < fractions.size(); ++f) {
     const double target = std::clamp(fractions[f], 0.0, 1.0) * total;
-    const std::size_t j = static_cast<std::size_t>(
+    first_bracket[f] = static_cast<std::size_t>(
         std::find_if(at_most.begin(), at_most.end(), [&](double F) { return F >= target; }) -
         at_most.begin());
+  }
+  std::vector<std::size_t> opened;  // the distinct j > 0, ascending
+  for (const std::size_t j : first_bracket) {
+    if (j > 0 && std::find(opened.begin(), opened.end(), j) == opened.end()) opened.push_back(j);
+  }
+  std::sort(opened.begin(), opened.end());
+  std::vector<Bracket> brackets(opened.size());
+  for (std::size_t k = 0; k < opened.size(); ++k) {
+    brackets[k].a = split_values[opened[k] - 1];
+    brackets[k].b = split_values[opened[k]];
+  }
+  narrow_all(brackets, patches);
+  tbb::parallel_for(std::size_t{0}, fractions.size(), [&](std::size_t f) {
+    const std::size_t j = first_bracket[f];
     if (j == 0) {
-      result[f] = splits.values[0];
+      result[f] = split_values[0];
       return;
     }
-    // The values strictly inside the bracket all lie between the two split positions.
-    std::vector<double> inside(selected.begin() + splits.positions[j - 1] + 1,
-                               selected.begin() + splits.positions[j]);
-    std::sort(inside.begin(), inside.end());
-    Bracket bracket;
-    narrow(bracket, patches, splits.values[j - 1], splits.values[j]);
-    result[f] = quantile_in(std::move(bracket), inside, target);
+    const double target = std::clamp(fractions[f], 0.0, 1.0) * total;
+    const std::vector<double> inside = values_inside(values, split_values[j - 1], split_values[j]);
+    const auto k = static_cast<std::size_t>(std::lower_bound(opened.begin(), opened.end(), j) -
+                                            opened.begin());
+    result[f] = quantile_in(brackets[k], inside, target);
   });
   return result;
 }

@@ -1,8 +1,9 @@
 #include "statistics/error_regions.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <algorithm>
 #include <array>
-#include <optional>
 
 #include "geometry/linear_patch.hpp"
 #include "sampling/lattice_triangles.hpp"
@@ -25,28 +26,47 @@ struct EdgePoint {
   std::uint64_t sample;
 };
 
-std::optional<RegionKind> kind_of(double d, const Tolerance& zone) {
+// Per sample: 0 within tolerance, else 1 + RegionKind.
+using KindCode = std::uint8_t;
+constexpr KindCode kWithin = 0;
+
+KindCode kind_code(double d, const Tolerance& zone) {
   switch (classify(d, zone)) {
     case ToleranceClass::excess:
-      return RegionKind::excess;
+      return 1 + static_cast<KindCode>(RegionKind::excess);
     case ToleranceClass::gouge:
-      return RegionKind::gouge;
+      return 1 + static_cast<KindCode>(RegionKind::gouge);
     case ToleranceClass::within:
       break;
   }
-  return std::nullopt;
+  return kWithin;
 }
 
+constexpr std::size_t kBlock = 1 << 14;
+
+// Works on the out-of-tolerance samples and the triangles holding one only (on a finished
+// part a few per cent of either): they are found in parallel, and only they are joined,
+// measured and labelled. The union-find runs over the out-of-tolerance samples numbered in
+// sample order, so its roots, and the regions' order and areas (summed triangle by triangle
+// in mesh order), are those of a pass over every sample.
 class RegionBuilder {
  public:
   RegionBuilder(const SampleSet& samples, std::span<const double> d, const Tolerance& zone)
-      : samples_(samples), d_(d), zone_(zone), sets_(d.size()) {
-    kind_.reserve(d.size());
-    for (double v : d) kind_.push_back(kind_of(v, zone));
+      : samples_(samples), d_(d), zone_(zone), kind_(d.size()), member_(d.size()) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, d.size(), kBlock), [&](const auto& r) {
+      for (std::size_t s = r.begin(); s != r.end(); ++s) kind_[s] = kind_code(d[s], zone);
+    });
+    for (std::uint64_t s = 0; s < d.size(); ++s) {
+      if (kind_[s] == kWithin) continue;
+      member_[s] = static_cast<std::uint32_t>(members_.size());
+      members_.push_back(s);
+    }
+    sets_ = DisjointSets(members_.size());
+    find_touched_triangles();
   }
 
   void connect_lattices() {
-    for (std::size_t t = 0; t < samples_.lattice_sizes.size(); ++t) {
+    for (const std::uint32_t t : touched_) {
       for_each_lattice_triangle(samples_, t,
                                 [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
                                   connect(a, b);
@@ -57,13 +77,20 @@ class RegionBuilder {
   }
 
   // Only lattices of size >= 3 put samples inside an edge; the corners are shared already.
+  // An edge joins samples only when a touched triangle lies on it, so only the sides of
+  // touched triangles and of triangles whose edge has both ends on a touched one are sorted.
   void connect_across_edges() {
-    std::vector<EdgeSide> sides;
     const Mesh& mesh = samples_.mesh;
+    std::vector<bool> on_touched(mesh.vertex_count(), false);
+    for (const std::uint32_t t : touched_) {
+      for (const std::uint32_t v : mesh.triangles[t]) on_touched[v] = true;
+    }
+    std::vector<EdgeSide> sides;
     for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
       if (samples_.lattice_sizes[t] < 3) continue;
       for (int k = 0; k < 3; ++k) {
         const std::uint32_t a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+        if (!touched_flag_[t] && !(on_touched[a] && on_touched[b])) continue;
         sides.push_back({std::min(a, b), std::max(a, b), static_cast<std::uint32_t>(t), k});
       }
     }
@@ -72,24 +99,27 @@ class RegionBuilder {
               [&](const EdgeSide& x, const EdgeSide& y) { return key(x) < key(y); });
     for (std::size_t first = 0; first < sides.size();) {
       std::size_t last = first + 1;
+      bool touched = touched_flag_[sides[first].triangle];
       while (last < sides.size() && sides[last].v0 == sides[first].v0 &&
              sides[last].v1 == sides[first].v1) {
+        touched = touched || touched_flag_[sides[last].triangle];
         ++last;
       }
-      if (last - first > 1) connect_along_edge(std::span(sides).subspan(first, last - first));
+      if (last - first > 1 && touched) {
+        connect_along_edge(std::span(sides).subspan(first, last - first));
+      }
       first = last;
     }
   }
 
   std::vector<ErrorRegion> regions() {
     std::vector<ErrorRegion> regions;
-    region_of_root_.assign(d_.size(), kUnassigned);
-    for (std::uint64_t s = 0; s < d_.size(); ++s) {
-      if (!kind_[s]) continue;
-      std::size_t& index = region_of_root_[sets_.find(s)];
+    region_of_root_.assign(members_.size(), kUnassigned);
+    for (const std::uint64_t s : members_) {
+      std::size_t& index = region_of_root_[root(s)];
       if (index == kUnassigned) {
         index = regions.size();
-        regions.push_back({*kind_[s], 0, {d_[s], s, samples_.positions[s]}, 0, {}});
+        regions.push_back({kind(s), 0, {d_[s], s, samples_.positions[s]}, 0, {}});
       }
       add_sample(regions[index], s);
     }
@@ -113,17 +143,45 @@ class RegionBuilder {
       rank[order_[k]] = static_cast<std::uint32_t>(k + 1);
     }
     std::vector<std::uint32_t> labels(d_.size(), kNoRegion);
-    for (std::uint64_t s = 0; s < d_.size(); ++s) {
-      if (kind_[s]) labels[s] = rank[region_of_root_[sets_.find(s)]];
-    }
+    for (const std::uint64_t s : members_) labels[s] = rank[region_of_root_[root(s)]];
     return labels;
   }
 
  private:
   static constexpr std::size_t kUnassigned = ~std::size_t{0};
 
+  RegionKind kind(std::uint64_t s) const { return static_cast<RegionKind>(kind_[s] - 1); }
+  std::uint64_t root(std::uint64_t s) { return sets_.find(member_[s]); }
+
+  // The triangles with an out-of-tolerance sample (corner, edge or interior point), in
+  // mesh order.
+  void find_touched_triangles() {
+    const std::size_t triangles = samples_.lattice_sizes.size();
+    touched_flag_.assign(triangles, 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles, kBlock), [&](const auto& r) {
+      for (std::size_t t = r.begin(); t != r.end(); ++t) touched_flag_[t] = touched(t);
+    });
+    for (std::size_t t = 0; t < triangles; ++t) {
+      if (touched_flag_[t]) touched_.push_back(static_cast<std::uint32_t>(t));
+    }
+  }
+
+  std::uint8_t touched(std::size_t t) const {
+    const std::uint32_t n = samples_.lattice_sizes[t];
+    if (n < 2) return 0;
+    for (const std::uint32_t v : samples_.mesh.triangles[t]) {
+      if (kind_[samples_.vertex_sample[v]] != kWithin) return 1;
+    }
+    const std::uint64_t first = samples_.first_interior_sample[t];
+    const std::uint64_t end = first + lattice_interior_count(n);
+    for (std::uint64_t s = first; s < end; ++s) {
+      if (kind_[s] != kWithin) return 1;
+    }
+    return 0;
+  }
+
   void connect(std::uint64_t a, std::uint64_t b) {
-    if (kind_[a] && kind_[a] == kind_[b]) sets_.unite(a, b);
+    if (kind_[a] != kWithin && kind_[a] == kind_[b]) sets_.unite(member_[a], member_[b]);
   }
 
   // The lattice points strictly inside the edge, from all triangles on it, merged by
@@ -163,25 +221,26 @@ class RegionBuilder {
   }
 
   ErrorRegion& region_of(std::vector<ErrorRegion>& regions, std::uint64_t s) {
-    return regions[region_of_root_[sets_.find(s)]];
+    return regions[region_of_root_[root(s)]];
   }
 
+  bool is(std::uint64_t s, RegionKind k) const { return kind_[s] == 1 + static_cast<KindCode>(k); }
+
   void add_areas(std::vector<ErrorRegion>& regions) {
-    for (std::size_t t = 0; t < samples_.lattice_sizes.size(); ++t) {
-      if (samples_.lattice_sizes[t] < 2) continue;
+    for (const std::uint32_t t : touched_) {
       const double area = lattice_triangle_area(samples_, t);
       for_each_lattice_triangle(
           samples_, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
-            if (!kind_[a] && !kind_[b] && !kind_[c]) return;
+            if (kind_[a] == kWithin && kind_[b] == kWithin && kind_[c] == kWithin) return;
             const LinearPatch patch = make_linear_patch(area, d_[a], d_[b], d_[c]);
             for (const std::uint64_t s : {a, b, c}) {
-              if (kind_[s] == RegionKind::excess) {
+              if (is(s, RegionKind::excess)) {
                 region_of(regions, s).area += area_above(patch, zone_.upper);
                 break;
               }
             }
             for (const std::uint64_t s : {a, b, c}) {
-              if (kind_[s] == RegionKind::gouge) {
+              if (is(s, RegionKind::gouge)) {
                 region_of(regions, s).area += area_below(patch, zone_.lower);
                 break;
               }
@@ -193,9 +252,13 @@ class RegionBuilder {
   const SampleSet& samples_;
   std::span<const double> d_;
   Tolerance zone_;
-  DisjointSets sets_;
-  std::vector<std::optional<RegionKind>> kind_;
-  std::vector<std::size_t> region_of_root_;  // per sample: its region when it is a root
+  std::vector<KindCode> kind_;               // per sample
+  std::vector<std::uint32_t> member_;        // per out-of-tolerance sample: its number
+  std::vector<std::uint64_t> members_;       // the out-of-tolerance samples, ascending
+  DisjointSets sets_{0};                     // over members_
+  std::vector<std::uint8_t> touched_flag_;   // per triangle
+  std::vector<std::uint32_t> touched_;       // triangles with an out-of-tolerance sample
+  std::vector<std::size_t> region_of_root_;  // per member: its region when it is a root
   std::vector<std::size_t> order_;           // regions in reported order (largest first)
 };
 

@@ -35,14 +35,16 @@ struct TriangleCounts {
   std::uint64_t unsampled = 0;
 };
 
-void count_triangles(const SampleSet& samples, ErrorStatistics& stats) {
+// areas: each triangle's area, as triangle_area gives it (lattice_patches keeps them).
+void count_triangles(const SampleSet& samples, std::span<const double> areas,
+                     ErrorStatistics& stats) {
   const Mesh& mesh = samples.mesh;
   const TriangleCounts counts = ordered_reduce(
       mesh.triangle_count(), kPatchBlock, TriangleCounts{},
       [&](std::size_t begin, std::size_t end) {
         TriangleCounts part;
         for (std::size_t t = begin; t < end; ++t) {
-          const double area = triangle_area(mesh, t);
+          const double area = areas[t];
           part.area += area;
           if (samples.lattice_sizes[t] == 0) {
             ++part.unsampled;
@@ -86,23 +88,29 @@ struct Moments {
   double square = 0;  // integral of (d - shift)^2
 };
 
+Moments integrate_block(std::span<const LinearPatch> patches, double shift) {
+  Moments part;
+  for (const LinearPatch& p : patches) {
+    part.area += p.area;
+    part.sum += integral(p);
+    part.square += squared_integral(p, shift);
+  }
+  return part;
+}
+
+void add_moments(Moments& acc, const Moments& part) {
+  acc.area += part.area;
+  acc.sum += part.sum;
+  acc.square += part.square;
+}
+
 Moments integrate(std::span<const LinearPatch> patches, double shift) {
   return ordered_reduce(
       patches.size(), kPatchBlock, Moments{},
       [&](std::size_t begin, std::size_t end) {
-        Moments part;
-        for (std::size_t i = begin; i < end; ++i) {
-          part.area += patches[i].area;
-          part.sum += integral(patches[i]);
-          part.square += squared_integral(patches[i], shift);
-        }
-        return part;
+        return integrate_block(patches.subspan(begin, end - begin), shift);
       },
-      [](Moments& acc, const Moments& part) {
-        acc.area += part.area;
-        acc.sum += part.sum;
-        acc.square += part.square;
-      });
+      add_moments);
 }
 
 // The mean is docs/METHOD.md's d_mean = (1/|S1|) ∫ d dS over the lattice: divided by the whole
@@ -110,8 +118,8 @@ Moments integrate(std::span<const LinearPatch> patches, double shift) {
 // with nothing (that is the paper's comparison of the schemes). RMS and spread describe
 // the sampled surface. The variance integrates (d - m)^2 in a second pass rather than
 // taking E[d^2] - m^2, which cancels catastrophically when the mean dwarfs the spread.
-void compute_moments(std::span<const LinearPatch> patches, ErrorStatistics& stats) {
-  const Moments raw = integrate(patches, 0);
+void compute_moments(std::span<const LinearPatch> patches, const Moments& raw,
+                     ErrorStatistics& stats) {
   stats.sampled_area = raw.area;
   if (!(raw.area > 0)) return;
   stats.mean = raw.sum / (stats.workpiece_area > 0 ? stats.workpiece_area : raw.area);
@@ -120,26 +128,51 @@ void compute_moments(std::span<const LinearPatch> patches, ErrorStatistics& stat
   stats.std_dev = std::sqrt(integrate(patches, sampled_mean).square / raw.area);
 }
 
-ToleranceAreas clip_to_tolerance(std::span<const LinearPatch> patches, const Tolerance& zone) {
-  ToleranceAreas areas = ordered_reduce(
-      patches.size(), kPatchBlock, ToleranceAreas{zone},
+ToleranceAreas clip_block(std::span<const LinearPatch> patches, const Tolerance& zone) {
+  ToleranceAreas part{zone};
+  for (const LinearPatch& p : patches) {
+    const double gouge = area_below(p, zone.lower);
+    const double excess = area_above(p, zone.upper);
+    part.gouge += gouge;
+    part.excess += excess;
+    part.within += p.area - gouge - excess;
+  }
+  return part;
+}
+
+void add_tolerance_areas(ToleranceAreas& acc, const ToleranceAreas& part) {
+  acc.gouge += part.gouge;
+  acc.excess += part.excess;
+  acc.within += part.within;
+}
+
+// The first pass over the patches: the raw moments, the tolerance areas and the histogram,
+// block by block, each block's three sums made while its patches are in cache and combined
+// in block order per measure, so each is what its own pass gave, to the bit.
+struct FirstPass {
+  Moments raw;
+  std::optional<ToleranceAreas> tolerance;
+  std::vector<double> histogram;
+};
+
+FirstPass first_pass(std::span<const LinearPatch> patches, const std::optional<Tolerance>& zone,
+                     const HistogramSums& histogram) {
+  static_assert(kHistogramBlock == kPatchBlock);
+  FirstPass zero{{}, std::nullopt, histogram.zero()};
+  if (zone) zero.tolerance = ToleranceAreas{*zone};
+  return ordered_reduce(
+      patches.size(), kPatchBlock, zero,
       [&](std::size_t begin, std::size_t end) {
-        ToleranceAreas part{zone};
-        for (std::size_t i = begin; i < end; ++i) {
-          const double gouge = area_below(patches[i], zone.lower);
-          const double excess = area_above(patches[i], zone.upper);
-          part.gouge += gouge;
-          part.excess += excess;
-          part.within += patches[i].area - gouge - excess;
-        }
+        const std::span<const LinearPatch> block = patches.subspan(begin, end - begin);
+        FirstPass part{integrate_block(block, 0), std::nullopt, histogram.block(block)};
+        if (zone) part.tolerance = clip_block(block, *zone);
         return part;
       },
-      [](ToleranceAreas& acc, const ToleranceAreas& part) {
-        acc.gouge += part.gouge;
-        acc.excess += part.excess;
-        acc.within += part.within;
+      [](FirstPass& acc, const FirstPass& part) {
+        add_moments(acc.raw, part.raw);
+        if (acc.tolerance) add_tolerance_areas(*acc.tolerance, *part.tolerance);
+        HistogramSums::combine(acc.histogram, part.histogram);
       });
-  return areas;
 }
 
 std::vector<Percentile> compute_percentiles(std::span<const LinearPatch> patches,
@@ -162,15 +195,17 @@ ErrorStatistics compute_error_statistics(const SampleSet& samples, std::span<con
   check_distances(samples, d);
   ErrorStatistics stats;
   stats.samples = d.size();
-  count_triangles(samples, stats);
+  std::vector<double> triangle_areas;
+  const Buffer<LinearPatch> patches = lattice_patches(samples, d, &triangle_areas);
+  count_triangles(samples, triangle_areas, stats);
   find_extremes(samples, d, stats);
 
-  const Buffer<LinearPatch> patches = lattice_patches(samples, d);
-  compute_moments(patches, stats);
-  if (tolerance) stats.tolerance = clip_to_tolerance(patches, *tolerance);
-  stats.histogram = area_histogram(
-      patches, histogram.range.value_or(ValueRange{stats.min.value, stats.max.value}),
-      histogram.bins);
+  const HistogramSums histogram_sums(
+      histogram.range.value_or(ValueRange{stats.min.value, stats.max.value}), histogram.bins);
+  const FirstPass first = first_pass(patches, tolerance, histogram_sums);
+  compute_moments(patches, first.raw, stats);
+  if (tolerance) stats.tolerance = *first.tolerance;
+  stats.histogram = histogram_sums.histogram(first.histogram);
   stats.percentiles = compute_percentiles(patches, d);
   return stats;
 }

@@ -4,6 +4,8 @@
 
 #include <filesystem>
 
+#include <tbb/parallel_invoke.h>
+
 #include "util/error.hpp"
 
 namespace ncv {
@@ -341,13 +343,21 @@ PartReport make_part_report(const DistanceSet& distances, const std::optional<To
                                      : distances.reference.source;
   report.part = std::filesystem::path(workpiece).stem().string();
   report.distances = &distances;
-  report.statistics =
-      compute_error_statistics(distances.samples, distances.field.distance, tolerance, histogram);
-  if (tolerance) {
-    RegionMap regions = map_error_regions(distances.samples, distances.field.distance, *tolerance);
-    report.regions = std::move(regions.regions);
-    report.sample_region = std::move(regions.sample_region);
-  }
+  // The measures and the regions read the same distances and nothing of each other: they
+  // run side by side, so that the regions' serial union-find overlaps the measures' passes.
+  RegionMap regions;
+  tbb::parallel_invoke(
+      [&] {
+        report.statistics = compute_error_statistics(distances.samples, distances.field.distance,
+                                                     tolerance, histogram);
+      },
+      [&] {
+        if (tolerance) {
+          regions = map_error_regions(distances.samples, distances.field.distance, *tolerance);
+        }
+      });
+  report.regions = std::move(regions.regions);
+  report.sample_region = std::move(regions.sample_region);
   return report;
 }
 
