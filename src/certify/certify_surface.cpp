@@ -116,8 +116,7 @@ class Certifier {
         std::max({max_abs(surface_.to_local(box.min)), max_abs(surface_.to_local(box.max)),
                   max_abs(surface_.local_bounds().min), max_abs(surface_.local_bounds().max)});
     slack_ = rounding_slack(scale);
-    cap_ = options.points_cap ? options.points_cap
-                              : std::max<std::uint64_t>(kLeastPointsCap, samples.total_samples);
+    cap_ = certify_points_cap(options, samples.total_samples);
   }
 
   Certificate run() {
@@ -430,6 +429,11 @@ class Certifier {
 };
 
 }  // namespace
+
+std::uint64_t certify_points_cap(const CertifyOptions& options, std::uint64_t total_samples) {
+  return options.points_cap ? options.points_cap
+                            : std::max<std::uint64_t>(kLeastPointsCap, total_samples);
+}
 
 Certificate certify_surface(const SampleSet& samples, const DistanceField& raw,
                             const SearchIndex& index, const SideRule& side,

@@ -40,6 +40,12 @@ struct CertifyOptions {
   std::uint64_t points_cap = 0;
 };
 
+// Memory an added point costs while refinement works (the patches it splits and makes).
+inline constexpr double kBytesPerCertifyPoint = 170;
+
+// The cap on added points the options give for a lattice of this many samples.
+std::uint64_t certify_points_cap(const CertifyOptions& options, std::uint64_t total_samples);
+
 // `raw` holds the held samples' signed distances to the reference (+ outside it, before a
 // reverse direction's negation) and closest faces; `side` is the rule that signed them.
 Certificate certify_surface(const SampleSet& samples, const DistanceField& raw,

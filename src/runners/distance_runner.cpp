@@ -15,6 +15,7 @@
 #include "sampling/sample_normals.hpp"
 #include "search/search_index.hpp"
 #include "util/error.hpp"
+#include "util/memory_guard.hpp"
 #include "util/progress.hpp"
 #include "util/stopwatch.hpp"
 
@@ -140,6 +141,11 @@ DistanceSet measure_distances(SampleSet samples, const IndexedReference& referen
   } else {
     refuse_if_apart(bounding_box(reference.mesh), reference.source, bounding_box(samples.mesh),
                     samples.source);
+  }
+  if (options.certify) {
+    const std::uint64_t cap = certify_points_cap(*options.certify, samples.total_samples);
+    check_memory_budget(fmt::format("certifying with up to {} added points", cap),
+                        static_cast<double>(cap) * kBytesPerCertifyPoint, false);
   }
   const ReferenceSurface& surface = *reference.surface;
   const SignMethod method = resolve_sign_method(surface, options.sign);

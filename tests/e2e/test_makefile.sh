@@ -148,7 +148,8 @@ check "-n makes no result" test -z "$(find out -maxdepth 1 -type f -newer parts/
 batch -j2 "${settings[@]}" >run17.log 2>&1
 cp out/summary.csv whole.csv
 batch -j2 "${settings[@]}" SHARDS=3 >run18.log 2>&1
-check "three shards a part: the same summary, byte for byte" cmp whole.csv out/summary.csv
+check "three shards a part: the same summary, byte for byte but for the certified bounds" \
+  same_but_bounds whole.csv out/summary.csv
 check "each part in three shards, both directions" test "$(ls out/*.s[123].dist | wc -l)" -eq 30
 check "a new SHARDS redoes the samples" test "$(ran sample run18.log)" -eq 30
 batch SHARDS=0 >run19.log 2>&1
