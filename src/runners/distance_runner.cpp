@@ -145,7 +145,8 @@ DistanceSet measure_distances(SampleSet samples, const IndexedReference& referen
   if (options.certify) {
     const std::uint64_t cap = certify_points_cap(*options.certify, samples.total_samples);
     check_memory_budget(fmt::format("certifying with up to {} added points", cap),
-                        static_cast<double>(cap) * kBytesPerCertifyPoint, false);
+                        static_cast<double>(cap) * kBytesPerCertifyPoint, false,
+                        "give a smaller --certify-points");
   }
   const ReferenceSurface& surface = *reference.surface;
   const SignMethod method = resolve_sign_method(surface, options.sign);

@@ -60,17 +60,16 @@ std::uint64_t memory_budget_bytes() {
   return budget;
 }
 
-void check_memory_budget(const std::string& what, double bytes, bool force) {
+void check_memory_budget(const std::string& what, double bytes, bool force,
+                         const std::string& way_out) {
   const std::uint64_t budget = memory_budget_bytes();
   if (force || bytes <= static_cast<double>(budget)) return;
   // The estimate can exceed 2^64 (a step of 1e-9 on a large part), where converting it to
   // an integer is undefined behaviour: it is written as a double.
   const std::string needed = bytes < 1e12 ? format_bytes(static_cast<std::uint64_t>(bytes))
                                           : fmt::format("{:.3g} GB", bytes / 1e9);
-  throw UsageError(
-      fmt::format("{} would need about {} of memory (the budget is {}); "
-                  "use a larger step, or --force",
-                  what, needed, format_bytes(budget)));
+  throw UsageError(fmt::format("{} would need about {} of memory (the budget is {}); {}", what,
+                               needed, format_bytes(budget), way_out));
 }
 
 }  // namespace ncv

@@ -17,6 +17,7 @@ std::uint64_t memory_budget_bytes();
 
 // Throws UsageError (what it would take, how much memory, the way out) when `bytes`
 // exceeds the memory budget, unless forced.
-void check_memory_budget(const std::string& what, double bytes, bool force);
+void check_memory_budget(const std::string& what, double bytes, bool force,
+                         const std::string& way_out = "use a larger step, or --force");
 
 }  // namespace ncv
