@@ -319,9 +319,10 @@ class Certifier {
   // only, never on the threads.
   void refine(std::vector<Patch> open) {
     while (!open.empty()) {
+      const NearbyTargets targets{measured_.max + width_, measured_.min - width_, width_};
       tbb::parallel_for(std::size_t{0}, open.size(), [&](std::size_t k) {
         if (!open[k].near_checked) {
-          bound_by_nearby(open[k], nearby_.local(), width_, slack_, continuous_);
+          bound_by_nearby(open[k], nearby_.local(), targets, slack_, continuous_);
         }
       });
       std::vector<Patch> waiting;

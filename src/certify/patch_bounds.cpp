@@ -160,6 +160,8 @@ std::optional<double> covering_bound(const Patch& patch, NearbyTriangles& nearby
     shrunk[k] = onto_plane(centre + (1 - shrink) * (c[k].point - centre));
   }
   const Vec3 middle = (shrunk[0] + shrunk[1] + shrunk[2]) / 3.0;
+  BoundingBox shrunk_box;
+  for (const Vec3& v : shrunk) shrunk_box.extend(v);
   // A point of the shrunk patch inside one of them: its centre, or one between the centre and a
   // corner when the centre lies on an edge (lattices and meshes often share their grid lines).
   const std::array<Vec3, 4> probes = {middle, 0.5 * (middle + shrunk[0]),
@@ -176,10 +178,15 @@ std::optional<double> covering_bound(const Patch& patch, NearbyTriangles& nearby
     std::array<double, 6> ends;
     Vec3 apex;
   };
+  // Only the edges whose shadow comes near the shrunk patch's matter, outline or not.
   std::vector<Edge> edges;
   for (const std::uint32_t t : cover) {
     for (int k = 0; k < 3; ++k) {
       Vec3 p = reference[t][k], q = reference[t][(k + 1) % 3];
+      BoundingBox shadow;
+      shadow.extend(onto_plane(p));
+      shadow.extend(onto_plane(q));
+      if (box_gap(shadow, shrunk_box) > slack) continue;
       if (std::tie(q[0], q[1], q[2]) < std::tie(p[0], p[1], p[2])) std::swap(p, q);
       edges.push_back({{p[0], p[1], p[2], q[0], q[1], q[2]}, reference[t][(k + 2) % 3]});
     }
@@ -207,7 +214,8 @@ std::optional<double> covering_bound(const Patch& patch, NearbyTriangles& nearby
 
 // The least upper bound on |d| the triangles near the patch give: one triangle by
 // convexity, or the triangles that cover it.
-double nearby_upper_abs(const Patch& patch, NearbyTriangles& nearby, double width, double slack) {
+double nearby_upper_abs(const Patch& patch, NearbyTriangles& nearby, double width,
+                        double enough_abs, double slack) {
   const std::span<const TriangleCorners> reference = nearby.triangles();
   double largest = 0;
   for (const PatchCorner& c : patch.corners) largest = std::max(largest, std::fabs(c.d));
@@ -236,10 +244,18 @@ double nearby_upper_abs(const Patch& patch, NearbyTriangles& nearby, double widt
       continue;
     }
     const TriangleCorners& base = reference[face];
-    planes.push_back({normalized(cross(base[1] - base[0], base[2] - base[0])), base[0]});
+    const Vec3 normal = normalized(cross(base[1] - base[0], base[2] - base[0]));
+    // A face parallel to one tried already gives the same covering.
+    if (std::any_of(planes.begin(), planes.end(), [&](const std::pair<Vec3, Vec3>& plane) {
+          return std::fabs(dot(plane.first, normal)) > 1 - 1e-12 &&
+                 std::fabs(dot(plane.first, base[0] - plane.second)) <= kFlatTolerance * slack;
+        })) {
+      continue;
+    }
+    planes.push_back({normal, base[0]});
     cutoffs.push_back(kFlatTolerance * slack);
   }
-  for (std::size_t k = 0; k < planes.size() && best > largest + width; ++k) {
+  for (std::size_t k = 0; k < planes.size() && best > std::max(largest + width, enough_abs); ++k) {
     if (const std::optional<double> covered = covering_bound(
             patch, nearby, planes[k].first, planes[k].second, cutoffs[k], 0.25 * width, slack)) {
       best = std::min(best, *covered);
@@ -250,17 +266,16 @@ double nearby_upper_abs(const Patch& patch, NearbyTriangles& nearby, double widt
 
 }  // namespace
 
-void bound_by_nearby(Patch& patch, NearbyTriangles& nearby, double width, double slack,
-                     bool side_is_continuous) {
-  patch.near_checked = true;
-  patch.upper_abs =
-      std::min(patch.upper_abs, nearby_upper_abs(patch, nearby, width, slack) + slack);
-  const int side = side_is_continuous ? common_side(patch) : 0;
+namespace {
+
+// The side proof: the least distance between the patch and the reference triangles within
+// upper_abs of it (none farther can be the nearest to a point of the patch).
+void prove_side(Patch& patch, NearbyTriangles& nearby, double slack) {
+  const int side = common_side(patch);
   if (side == 0) return;  // the corners already show that the error changes sign or is 0
   const TriangleCorners corners = {patch.corners[0].point, patch.corners[1].point,
                                    patch.corners[2].point};
   const std::span<const TriangleCorners> reference = nearby.triangles();
-  // Triangles farther than upper_abs cannot be the nearest to any point of the patch.
   const double reach = patch.upper_abs;
   double least = reach;
   BoundingBox box;
@@ -275,6 +290,23 @@ void bound_by_nearby(Patch& patch, NearbyTriangles& nearby, double width, double
   if (!scanned || !(least > 0)) return;
   patch.side = side;
   patch.lower_abs = std::max(patch.lower_abs, least);
+}
+
+}  // namespace
+
+void bound_by_nearby(Patch& patch, NearbyTriangles& nearby, const NearbyTargets& targets,
+                     double slack, bool side_is_continuous) {
+  patch.near_checked = true;
+  if (side_is_continuous && patch.side == 0) prove_side(patch, nearby, slack);
+  // What |d| must not exceed for the patch to be settled: its upper bound below the upper
+  // target, its lower bound above the lower one, whichever its side asks.
+  const double for_upper = targets.upper, for_lower = -targets.lower;
+  const double enough_abs = patch.side > 0   ? for_upper
+                            : patch.side < 0 ? for_lower
+                                             : std::min(for_upper, for_lower);
+  if (patch.upper_abs <= enough_abs) return;
+  patch.upper_abs = std::min(
+      patch.upper_abs, nearby_upper_abs(patch, nearby, targets.width, enough_abs, slack) + slack);
 }
 
 NearbyTriangles::NearbyTriangles(const SearchIndex& index)

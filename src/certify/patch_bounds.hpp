@@ -73,13 +73,21 @@ class NearbyTriangles {
   std::uint32_t epoch_ = 0;
 };
 
-// The bounds from the reference triangles near the patch: lowers upper_abs by single
-// triangles, coplanar pairs and flat regions that cover the patch (the last loses up to a
-// quarter of `width`, the interval width asked); proves the side where the patch does not
-// touch the reference, and raises lower_abs to the least patch-triangle distance. Leaves
-// what it cannot scan as it is.
-void bound_by_nearby(Patch& patch, NearbyTriangles& nearby, double width, double slack,
-                     bool side_is_continuous);
+// What refinement aims at: every patch's upper bound at most `upper` and its lower bound at
+// least `lower` (the measured extremes widened by the width asked, `width`).
+struct NearbyTargets {
+  double upper = 0;
+  double lower = 0;
+  double width = 0;
+};
+
+// The bounds from the reference triangles near the patch: proves the side where the patch
+// does not touch the reference, raising lower_abs to the least patch-triangle distance; then,
+// while upper_abs still misses the targets, lowers it by single triangles and by triangles
+// that cover the patch (which loses up to a quarter of the width). Leaves what it cannot scan
+// as it is.
+void bound_by_nearby(Patch& patch, NearbyTriangles& nearby, const NearbyTargets& targets,
+                     double slack, bool side_is_continuous);
 
 template <class Visit>
 bool NearbyTriangles::for_each(const Patch& patch, double reach, std::uint64_t max_cells,
