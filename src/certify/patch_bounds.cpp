@@ -18,6 +18,9 @@ namespace {
 constexpr std::uint64_t kMaxNearbyCells = 512;
 // Triangles a covering may take: a patch over more is split first (its cost stays small).
 constexpr std::size_t kMaxCoveringTriangles = 256;
+// Triangles the side proof measures the patch against: a patch near more is split first,
+// which costs three points, far less than measuring it against them all.
+constexpr std::size_t kMaxSideCandidates = 48;
 // Nearby triangles tried one by one by convexity.
 constexpr std::size_t kMaxSingleCandidates = 32;
 // Reference triangles within this many rounding slacks of a plane count as lying in it: the
@@ -280,14 +283,16 @@ void prove_side(Patch& patch, NearbyTriangles& nearby, double slack) {
   double least = reach;
   BoundingBox box;
   for (const Vec3& p : corners) box.extend(p);
+  std::size_t measured = 0;
   const bool scanned = nearby.for_each(patch, reach, kMaxNearbyCells, [&](std::uint32_t t) {
-    if (least <= 0) return;
+    if (least <= 0 || measured > kMaxSideCandidates) return;
     BoundingBox triangle_box;
     for (const Vec3& p : reference[t]) triangle_box.extend(p);
     if (box_gap(box, triangle_box) >= least) return;
+    ++measured;
     least = std::min(least, triangle_distance_lower_bound(corners, reference[t], slack));
   });
-  if (!scanned || !(least > 0)) return;
+  if (!scanned || measured > kMaxSideCandidates || !(least > 0)) return;
   patch.side = side;
   patch.lower_abs = std::max(patch.lower_abs, least);
 }
