@@ -1,5 +1,7 @@
 #include "runners/phase_log.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
@@ -11,6 +13,18 @@ namespace ncv {
 void PhaseLog::done(const std::string& phase) {
   const double seconds = clock_.seconds();
   clock_.restart();
+  add(phase, seconds);
+}
+
+void PhaseLog::done(const std::string& first, double first_seconds, const std::string& second) {
+  const double seconds = clock_.seconds();
+  clock_.restart();
+  const double part = std::min(first_seconds, seconds);
+  add(first, part);
+  add(second, seconds - part);
+}
+
+void PhaseLog::add(const std::string& phase, double seconds) {
   for (auto& [name, total] : phases_) {
     if (name == phase) {
       total += seconds;

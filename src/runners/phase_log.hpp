@@ -16,6 +16,9 @@ class PhaseLog {
  public:
   // Ends the phase running since the last call (or since construction).
   void done(const std::string& phase);
+  // Ends it as two phases: `first` took `first_seconds` of it (at most all), `second` the
+  // rest (the distance step's search, then its certification).
+  void done(const std::string& first, double first_seconds, const std::string& second);
   template <class Work>
   void time(const std::string& phase, Work&& work) {
     work();
@@ -26,6 +29,8 @@ class PhaseLog {
   void summary(const std::string& timings_path, nlohmann::json extra) const;
 
  private:
+  void add(const std::string& phase, double seconds);
+
   Stopwatch clock_;
   std::vector<std::pair<std::string, double>> phases_;
 };

@@ -82,7 +82,8 @@ StepHooks logging_and_writing(const std::optional<std::array<DirectionFiles, 2>>
   hooks.measured = [&phases, &folder, in, files, written](const DistanceSet& distances,
                                                           double seconds) {
     log_distances(distances, seconds);
-    phases.done(phase_name(distances.direction, "distance"));
+    phases.done(phase_name(distances.direction, "distance"), seconds,
+                phase_name(distances.direction, "certify"));
     if (!files) return;
     const DirectionFiles& to = in(distances.direction);
     const std::uint64_t hash = written->samples_hash[static_cast<std::size_t>(distances.direction)];
