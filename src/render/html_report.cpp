@@ -245,6 +245,15 @@ void write_statistics(std::string& out, const PartReport& r, const NumberStyle& 
          esc(n.units));
   stat_row(out, "max", n.length(s.max.value), "at " + n.point(s.max.position));
   stat_row(out, "min", n.length(s.min.value), "at " + n.point(s.min.position));
+  if (const std::optional<Certificate>& c = r.distances->certificate) {
+    // The certified bounds: no point of the surface, between the samples too, goes beyond.
+    stat_row(out, "max, proven", "\u2264 " + n.length(c->max.bound),
+             fmt::format("measured {} between samples; the bound near {}",
+                         n.length(c->max.measured), n.point(c->max.bound_at)));
+    stat_row(out, "min, proven", "\u2265 " + n.length(c->min.bound),
+             fmt::format("measured {} between samples; the bound near {}",
+                         n.length(c->min.measured), n.point(c->min.bound_at)));
+  }
   stat_row(out, "|d| max", n.length(s.max_abs.value), "one-sided Hausdorff distance");
   stat_row(out, "mean", n.length(s.mean), "area-weighted over the lattice");
   stat_row(out, "RMS", n.length(s.rms));
