@@ -114,3 +114,24 @@ TEST_CASE("text that would end a script element is escaped in the page's data", 
   const std::string html = html_report(verification_html_report(report, maps));
   CHECK_THAT(html, !Catch::Contains("<script>alert"));
 }
+
+TEST_CASE("a part not proven within tolerance gets the inconclusive banner and its bounds",
+          "[html]") {
+  DistanceSet part = plate();
+  // Measured within [-0.3, 0.9] (d runs from -0.2 to 0.8), but between the samples the error
+  // may reach 0.95.
+  Certificate c;
+  c.width_asked = 0.001;
+  c.max = {0.8, Vec3(10, 0, 0), 0.95, Vec3(9.5, 1, 0)};
+  c.min = {-0.2, Vec3(0, 0, 0), -0.2, Vec3(0, 0, 0)};
+  c.sign_proven = true;
+  part.certificate = c;
+  const VerificationReport report{make_part_report(part, Tolerance{-0.3, 0.9}, {}), {}};
+  const ColorMap maps[] = {make_color_map(ColorMapKind::diverging, {-0.8, 0.8}, std::nullopt)};
+  const std::string html = html_report(verification_html_report(report, maps));
+  CHECK_THAT(html, Catch::Contains("ncv-verdict ncv-inconclusive"));
+  CHECK_THAT(html, Catch::Contains("INCONCLUSIVE \u2014 not proven within tolerance"));
+  CHECK_THAT(html, Catch::Contains("may reach 0.95"));
+  CHECK_THAT(html, Catch::Contains("max, proven"));
+  CHECK_THAT(html, Catch::Contains("\u2264 0.95"));
+}
