@@ -22,7 +22,6 @@ namespace {
 // sub-triangle, about the rounding slack of the coordinates, and splitting says no more.
 constexpr std::uint32_t kMaxDepth = 30;
 constexpr std::size_t kTriangleBlock = 1024;
-constexpr std::size_t kPatchBlock = 256;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The rounding slack of distances computed on coordinates of magnitude `scale`: the search's
@@ -103,7 +102,6 @@ class Certifier {
         raw_(raw),
         index_(index),
         side_(side),
-        options_(options),
         width_(options.width.value_or(kDefaultCertifyWidth)),
         surface_(index.surface()),
         continuous_(side.method() == SignMethod::pseudonormal &&
@@ -413,7 +411,6 @@ class Certifier {
   const DistanceField& raw_;
   const SearchIndex& index_;
   const SideRule& side_;
-  const CertifyOptions& options_;
   const double width_;
   const ReferenceSurface& surface_;
   const bool continuous_;
