@@ -30,50 +30,38 @@ double rounding_slack(double scale) {
   return std::ldexp(scale, -30);
 }
 
-// The measured extremes, the earlier one kept on a tie.
+// The largest and the smallest of values offered with their places, the earlier one kept on
+// a tie: the measured extremes, and the patches' bounds.
 struct Extremes {
   double max = -kInfinity, min = kInfinity;
   Vec3 max_at{0, 0, 0}, min_at{0, 0, 0};
 
-  void add(double d, Vec3 at) {
-    if (d > max) {
-      max = d;
-      max_at = at;
+  void add(double high, Vec3 high_at, double low, Vec3 low_at) {
+    if (high > max) {
+      max = high;
+      max_at = high_at;
     }
-    if (d < min) {
-      min = d;
-      min_at = at;
+    if (low < min) {
+      min = low;
+      min_at = low_at;
     }
   }
-  void add(const Extremes& e) {
-    if (e.max > max) add(e.max, e.max_at);
-    if (e.min < min) add(e.min, e.min_at);
-  }
+  void add(double d, Vec3 at) { add(d, at, d, at); }
+  void add(const Extremes& e) { add(e.max, e.max_at, e.min, e.min_at); }
 };
 
-// The patches' bounds folded, the earlier one kept on a tie.
+// The patches' bounds folded (max: the largest upper bound, min: the smallest lower one).
 struct BoundFold {
-  double upper = -kInfinity, lower = kInfinity;
-  Vec3 upper_at{0, 0, 0}, lower_at{0, 0, 0};
+  Extremes bounds;
   std::uint64_t patches = 0, unresolved = 0;
 
-  void add(double up, Vec3 up_at, double low, Vec3 low_at) {
-    if (up > upper) {
-      upper = up;
-      upper_at = up_at;
-    }
-    if (low < lower) {
-      lower = low;
-      lower_at = low_at;
-    }
-  }
   void add(const Patch& patch, bool open, Vec3 origin) {
     const Vec3 centre = patch.centre() + origin;
-    add(patch.upper(), centre, patch.lower(), centre);
+    bounds.add(patch.upper(), centre, patch.lower(), centre);
     unresolved += open ? 1 : 0;
   }
   void add(const BoundFold& f) {
-    add(f.upper, f.upper_at, f.lower, f.lower_at);
+    bounds.add(f.bounds);
     patches += f.patches;
     unresolved += f.unresolved;
   }
@@ -132,9 +120,10 @@ class Certifier {
   bool is_held(std::uint64_t s) const {
     return s >= samples_.first_sample && s - samples_.first_sample < samples_.sample_count();
   }
-  bool is_open(const Patch& p) const {
-    return p.upper() > measured_.max + width_ || p.lower() < measured_.min - width_;
+  bool is_open(double upper, double lower) const {
+    return upper > measured_.max + width_ || lower < measured_.min - width_;
   }
+  bool is_open(const Patch& p) const { return is_open(p.upper(), p.lower()); }
 
   // The sampled triangles whose anchor sample this set holds.
   void find_covered_triangles() {
@@ -276,11 +265,11 @@ class Certifier {
                   ++part.fold.patches;
                   double upper = 0, lower = 0;
                   bound_cheaply(a, b, c, cover, upper, lower);
-                  if (!(upper > measured_.max + width_ || lower < measured_.min - width_)) {
+                  if (!is_open(upper, lower)) {
                     // Where only rarely a new extreme: its place is worked out then.
-                    if (upper > part.fold.upper || lower < part.fold.lower) {
+                    if (upper > part.fold.bounds.max || lower < part.fold.bounds.min) {
                       const Vec3 centre = global_centre(a, b, c);
-                      part.fold.add(upper, centre, lower, centre);
+                      part.fold.bounds.add(upper, centre, lower, centre);
                     }
                     return;
                   }
@@ -393,10 +382,11 @@ class Certifier {
     Certificate c;
     c.width_asked = width_;
     c.points_cap = cap_;
-    c.max = {measured_.max, measured_.max_at, std::max(fold_.upper, measured_.max),
-             fold_.upper > measured_.max ? fold_.upper_at : measured_.max_at};
-    c.min = {measured_.min, measured_.min_at, std::min(fold_.lower, measured_.min),
-             fold_.lower < measured_.min ? fold_.lower_at : measured_.min_at};
+    const Extremes& b = fold_.bounds;
+    c.max = {measured_.max, measured_.max_at, std::max(b.max, measured_.max),
+             b.max > measured_.max ? b.max_at : measured_.max_at};
+    c.min = {measured_.min, measured_.min_at, std::min(b.min, measured_.min),
+             b.min < measured_.min ? b.min_at : measured_.min_at};
     c.patches = fold_.patches;
     c.refined_patches = splits_;
     c.added_points = added_;
