@@ -56,12 +56,9 @@ struct Worker {
 class SignedDistanceJob {
  public:
   SignedDistanceJob(const ReferenceSurface& nominal, const SearchIndex* grid,
-                    std::span<const Vec3> points, std::span<const Vec3> normals, SignMethod method)
-      : nominal_(nominal),
-        grid_(grid),
-        points_(points),
-        normals_(normals),
-        side_(nominal, method) {}
+                    std::span<const Vec3> points, std::span<const Vec3> normals,
+                    const SideRule& side)
+      : nominal_(nominal), grid_(grid), points_(points), normals_(normals), side_(side) {}
 
   void run(DistanceField& field, std::size_t begin, std::size_t end) {
     Worker& worker = workers_.local();
@@ -93,7 +90,7 @@ class SignedDistanceJob {
   const SearchIndex* grid_;
   std::span<const Vec3> points_;
   std::span<const Vec3> normals_;
-  SideRule side_;
+  const SideRule& side_;
   tbb::enumerable_thread_specific<Worker> workers_;
 };
 
@@ -107,16 +104,15 @@ namespace {
 
 DistanceField measure(const ReferenceSurface& nominal, const SearchIndex* grid,
                       std::span<const Vec3> points, std::span<const Vec3> sample_normals,
-                      SignMethod method, SearchStatistics* statistics,
+                      const SideRule& side, SearchStatistics* statistics,
                       const DistanceProgress& progress) {
-  check_inputs(points, sample_normals, method);
+  check_inputs(points, sample_normals, side.method());
   const std::size_t n = points.size();
   DistanceField field;
   field.distance.resize(n);
   field.closest_face.resize(n);
 
-  SignedDistanceJob job(nominal, grid, points, sample_normals,
-                        resolve_sign_method(nominal, method));
+  SignedDistanceJob job(nominal, grid, points, sample_normals, side);
   const std::thread::id caller = std::this_thread::get_id();
   std::atomic<std::size_t> done{0};
   const std::size_t blocks = (n + kDistanceBlockSize - 1) / kDistanceBlockSize;
@@ -146,7 +142,15 @@ DistanceField compute_signed_distances(const SearchIndex& index, std::span<const
                                        std::span<const Vec3> sample_normals, SignMethod method,
                                        SearchStatistics* statistics,
                                        const DistanceProgress& progress) {
-  return measure(index.surface(), &index, points, sample_normals, method, statistics, progress);
+  const SideRule side(index.surface(), resolve_sign_method(index.surface(), method));
+  return measure(index.surface(), &index, points, sample_normals, side, statistics, progress);
+}
+
+DistanceField compute_signed_distances(const SearchIndex& index, std::span<const Vec3> points,
+                                       std::span<const Vec3> sample_normals, const SideRule& side,
+                                       SearchStatistics* statistics,
+                                       const DistanceProgress& progress) {
+  return measure(index.surface(), &index, points, sample_normals, side, statistics, progress);
 }
 
 DistanceField compute_signed_distances(const ReferenceSurface& surface,
@@ -154,7 +158,16 @@ DistanceField compute_signed_distances(const ReferenceSurface& surface,
                                        std::span<const Vec3> sample_normals, SignMethod method,
                                        SearchStatistics* statistics,
                                        const DistanceProgress& progress) {
-  return measure(surface, nullptr, points, sample_normals, method, statistics, progress);
+  const SideRule side(surface, resolve_sign_method(surface, method));
+  return measure(surface, nullptr, points, sample_normals, side, statistics, progress);
+}
+
+DistanceField compute_signed_distances(const ReferenceSurface& surface,
+                                       std::span<const Vec3> points,
+                                       std::span<const Vec3> sample_normals, const SideRule& side,
+                                       SearchStatistics* statistics,
+                                       const DistanceProgress& progress) {
+  return measure(surface, nullptr, points, sample_normals, side, statistics, progress);
 }
 
 }  // namespace ncv

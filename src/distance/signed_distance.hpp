@@ -27,6 +27,7 @@
 #include <span>
 #include <vector>
 
+#include "distance/side_rule.hpp"
 #include "reference/reference_surface.hpp"
 #include "reference/sign_method.hpp"
 #include "search/search_index.hpp"
@@ -75,6 +76,17 @@ DistanceField compute_signed_distances(const SearchIndex& index, std::span<const
 DistanceField compute_signed_distances(const ReferenceSurface& surface,
                                        std::span<const Vec3> points,
                                        std::span<const Vec3> sample_normals, SignMethod method,
+                                       SearchStatistics* statistics = nullptr,
+                                       const DistanceProgress& progress = {});
+// The same two with a side rule made already (a resolved method on the same surface), so
+// that a caller signing more points later (certification) builds its winding tree once.
+DistanceField compute_signed_distances(const SearchIndex& index, std::span<const Vec3> points,
+                                       std::span<const Vec3> sample_normals, const SideRule& side,
+                                       SearchStatistics* statistics = nullptr,
+                                       const DistanceProgress& progress = {});
+DistanceField compute_signed_distances(const ReferenceSurface& surface,
+                                       std::span<const Vec3> points,
+                                       std::span<const Vec3> sample_normals, const SideRule& side,
                                        SearchStatistics* statistics = nullptr,
                                        const DistanceProgress& progress = {});
 

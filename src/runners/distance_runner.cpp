@@ -159,12 +159,13 @@ DistanceSet measure_distances(SampleSet samples, const IndexedReference& referen
   const auto report = [&](std::size_t done, std::size_t) { progress.update(done); };
   DistanceSet result;
   const SearchIndex index(reference);
+  const SideRule side(surface, method);
   if (options.brute_force) {
     result.field =
-        compute_signed_distances(surface, samples.positions, normals, method, &statistics, report);
+        compute_signed_distances(surface, samples.positions, normals, side, &statistics, report);
   } else {
     result.field =
-        compute_signed_distances(index, samples.positions, normals, method, &statistics, report);
+        compute_signed_distances(index, samples.positions, normals, side, &statistics, report);
   }
   progress.finish();
   const auto per_query = [&](std::uint64_t count) {
@@ -181,8 +182,7 @@ DistanceSet measure_distances(SampleSet samples, const IndexedReference& referen
   if (seconds) *seconds = clock.seconds();
   if (options.certify) {
     Stopwatch certify_clock;
-    const Certificate raw =
-        certify_surface(samples, result.field, index, SideRule(surface, method), *options.certify);
+    const Certificate raw = certify_surface(samples, result.field, index, side, *options.certify);
     result.certificate = options.direction == Direction::reverse ? negated(raw) : raw;
     log_certificate(*result.certificate, options.direction, certify_clock.seconds());
   }
