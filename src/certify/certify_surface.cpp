@@ -309,7 +309,9 @@ class Certifier {
       const NearbyTargets targets{measured_.max + width_, measured_.min - width_, width_};
       tbb::parallel_for(std::size_t{0}, open.size(), [&](std::size_t k) {
         if (!open[k].near_checked) {
-          bound_by_nearby(open[k], nearby_.local(), targets, slack_, continuous_);
+          PointProbe& probe = probes_.local();
+          const SideWitness witness = [&](Vec3 p) { return probe.measure(p, Vec3(0, 0, 0)).d; };
+          bound_by_nearby(open[k], nearby_.local(), witness, targets, slack_, continuous_);
         }
       });
       std::vector<Patch> waiting;

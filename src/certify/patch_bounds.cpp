@@ -7,6 +7,7 @@
 #include <tuple>
 #include <vector>
 
+#include "geometry/prism_overlap.hpp"
 #include "geometry/triangle_distance.hpp"
 
 namespace ncv {
@@ -21,6 +22,8 @@ constexpr std::size_t kMaxCoveringTriangles = 256;
 // Triangles the side proof measures the patch against: a patch near more is split first,
 // which costs three points, far less than measuring it against them all.
 constexpr std::size_t kMaxSideCandidates = 48;
+// Triangles the prism side proof tests: a patch near more is split first.
+constexpr std::size_t kMaxPrismTriangles = 256;
 // Nearby triangles tried one by one by convexity.
 constexpr std::size_t kMaxSingleCandidates = 32;
 // Reference triangles within this many rounding slacks of a plane count as lying in it: the
@@ -297,12 +300,67 @@ void prove_side(Patch& patch, NearbyTriangles& nearby, double slack) {
   patch.lower_abs = std::max(patch.lower_abs, least);
 }
 
+// The side proof where the patch touches the reference from one side (docs/CERTIFICATION.md
+// "Contact"): a face machined exactly to the nominal, the line where it meets a face left
+// higher. Over the patch shrunk by `margin`, a prism from height `low` to `high` on one side
+// of its plane that no reference triangle meets holds no point of the surface, so all of it
+// lies on one side, which one point of it, measured, tells. A point of the shrunk patch on
+// the other side deeper than `low` would have a ball free of the surface reaching into the
+// prism; the rim lost by shrinking adds `margin` by the Lipschitz property. So side * d >=
+// -(low + margin) on the patch.
+void prove_side_by_prism(Patch& patch, NearbyTriangles& nearby, const SideWitness& witness,
+                         double width, double slack) {
+  const auto& c = patch.corners;
+  const Vec3 normal = normalized(cross(c[1].point - c[0].point, c[2].point - c[0].point));
+  const Vec3 centre = patch.centre();
+  double radius = 0;
+  for (const PatchCorner& corner : c) radius = std::max(radius, norm(corner.point - centre));
+  const double margin = 0.25 * width;
+  if (normal == Vec3(0, 0, 0) || !(radius > margin)) return;
+  const double low = std::max(0.25 * width, 16 * slack);
+  const double high = low + std::max(patch.upper_abs, low);
+  std::vector<std::uint32_t> near;
+  if (!nearby.for_each(patch, high + 2 * slack, kMaxNearbyCells,
+                       [&](std::uint32_t t) { near.push_back(t); }) ||
+      near.size() > kMaxPrismTriangles) {
+    return;
+  }
+  const double shrink = margin / radius;
+  TriangleCorners shrunk;
+  for (int k = 0; k < 3; ++k) shrunk[k] = centre + (1 - shrink) * (c[k].point - centre);
+  const double reached = -(low + margin * (1 + 1e-12) + 2 * slack);
+  const std::span<const TriangleCorners> reference = nearby.triangles();
+  for (const double direction : {1.0, -1.0}) {
+    const Prism prism{shrunk, direction * normal, low, high};
+    if (std::any_of(near.begin(), near.end(), [&](std::uint32_t t) {
+          return triangle_meets_prism(reference[t], prism, slack);
+        })) {
+      continue;
+    }
+    const double d = witness(centre + (direction * 0.5 * (low + high)) * normal);
+    const int side = side_of(d);
+    // A corner beyond what the proof allows would mean the surface is not what the sign
+    // assumes (it is proven closed and oriented); prove nothing then.
+    if (side == 0 || std::any_of(c.begin(), c.end(), [&](const PatchCorner& corner) {
+          return side * corner.d < reached;
+        })) {
+      return;
+    }
+    patch.side = side;
+    patch.lower_abs = reached;
+    return;
+  }
+}
+
 }  // namespace
 
-void bound_by_nearby(Patch& patch, NearbyTriangles& nearby, const NearbyTargets& targets,
-                     double slack, bool side_is_continuous) {
+void bound_by_nearby(Patch& patch, NearbyTriangles& nearby, const SideWitness& witness,
+                     const NearbyTargets& targets, double slack, bool side_is_continuous) {
   patch.near_checked = true;
   if (side_is_continuous && patch.side == 0) prove_side(patch, nearby, slack);
+  if (side_is_continuous && patch.side == 0) {
+    prove_side_by_prism(patch, nearby, witness, targets.width, slack);
+  }
   // What |d| must not exceed for the patch to be settled: its upper bound below the upper
   // target, its lower bound above the lower one, whichever its side asks.
   const double for_upper = targets.upper, for_lower = -targets.lower;

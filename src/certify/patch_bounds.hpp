@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -36,8 +37,9 @@ struct Patch {
   std::uint32_t triangle = 0;  // of the sampled mesh
   std::uint32_t depth = 0;     // 0 for a lattice sub-triangle, +1 per split
   bool near_checked = false;   // bounded by the nearby triangles (bound_by_nearby) already
-  // Proven: upper_abs >= |d| everywhere on the patch, and when side != 0 the error has that
-  // sign everywhere with |d| >= lower_abs.
+  // Proven: upper_abs >= |d| everywhere on the patch, and when side != 0, side * d >=
+  // lower_abs everywhere: the error has that sign with |d| >= lower_abs, or, where the patch
+  // touches the reference (lower_abs < 0), it crosses to the other side by -lower_abs at most.
   double upper_abs = 0;
   double lower_abs = 0;
   int side = 0;
@@ -81,13 +83,18 @@ struct NearbyTargets {
   double width = 0;
 };
 
+// A point's signed distance to the reference, measured as a sample's is: the witness of the
+// side of a prism no reference triangle meets.
+using SideWitness = std::function<double(Vec3)>;
+
 // The bounds from the reference triangles near the patch: proves the side where the patch
-// does not touch the reference, raising lower_abs to the least patch-triangle distance; then,
-// while upper_abs still misses the targets, lowers it by single triangles and by triangles
-// that cover the patch (which loses up to a quarter of the width). Leaves what it cannot scan
-// as it is.
-void bound_by_nearby(Patch& patch, NearbyTriangles& nearby, const NearbyTargets& targets,
-                     double slack, bool side_is_continuous);
+// does not touch the reference, raising lower_abs to the least patch-triangle distance, or
+// where it touches the reference from one side only (a contact face or line), within a
+// quarter of the width of the contact; then, while upper_abs still misses the targets,
+// lowers it by single triangles and by triangles that cover the patch (which loses up to a
+// quarter of the width). Leaves what it cannot scan as it is.
+void bound_by_nearby(Patch& patch, NearbyTriangles& nearby, const SideWitness& witness,
+                     const NearbyTargets& targets, double slack, bool side_is_continuous);
 
 template <class Visit>
 bool NearbyTriangles::for_each(const Patch& patch, double reach, std::uint64_t max_cells,

@@ -106,6 +106,41 @@ TEST_CASE("dense exact sampling never leaves the certified interval", "[certify]
   }
 }
 
+TEST_CASE("a face machined exactly to the nominal beside an uncut slot is certified to the width",
+          "[certify]") {
+  // Six voxels by four by three with a slot one wide and one deep across the top: where the
+  // uncut top meets the slot's rim, the workpiece touches the nominal from one side only.
+  fixtures::VoxelSolid slotted, uncut;
+  slotted.fill(0, 0, 0, 6, 4, 3);
+  slotted.carve(2, 0, 2, 3, 4, 3);
+  uncut.fill(0, 0, 0, 6, 4, 3);
+  const double width = 0.001;
+  SECTION("from the workpiece: the top over the slot is half its width away") {
+    const IndexedReference nominal = index_reference(slotted.mesh(1.0), "slotted");
+    const Mesh workpiece = uncut.mesh(1.0);
+    const Certified c = certify(workpiece, nominal, 0.3, CertifyOptions{width, 0});
+    CHECK(c.certificate.unresolved == 0);
+    CHECK(c.certificate.max.measured == Approx(0.5).margin(1e-12));
+    CHECK(c.certificate.max.width() <= width);
+    CHECK(c.certificate.min.bound >= -width);
+    const auto [true_max, true_min] = dense_extremes(workpiece, nominal, 400);
+    CHECK(c.certificate.max.bound >= true_max);
+    CHECK(c.certificate.min.bound <= true_min);
+  }
+  SECTION("from the nominal: its slot lies inside the uncut block, down to its depth") {
+    const IndexedReference workpiece = index_reference(uncut.mesh(1.0), "uncut");
+    const Mesh nominal = slotted.mesh(1.0);
+    const Certified c = certify(nominal, workpiece, 0.3, CertifyOptions{width, 0});
+    CHECK(c.certificate.unresolved == 0);
+    CHECK(c.certificate.min.measured == Approx(-1.0).margin(1e-12));
+    CHECK(c.certificate.min.width() <= width);
+    CHECK(c.certificate.max.bound <= width);
+    const auto [true_max, true_min] = dense_extremes(nominal, workpiece, 400);
+    CHECK(c.certificate.max.bound >= true_max);
+    CHECK(c.certificate.min.bound <= true_min);
+  }
+}
+
 TEST_CASE("the certificate does not depend on the thread count", "[certify]") {
   const IndexedReference nominal = index_reference(fixtures::torus(10, 3.2, 48, 24), "torus");
   const Mesh workpiece = fixtures::torus(10, 3, 30, 14);
