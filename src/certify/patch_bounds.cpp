@@ -357,19 +357,31 @@ void prove_side_by_prism(Patch& patch, NearbyTriangles& nearby, const SideWitnes
 void bound_by_nearby(Patch& patch, NearbyTriangles& nearby, const SideWitness& witness,
                      const NearbyTargets& targets, double slack, bool side_is_continuous) {
   patch.near_checked = true;
+  // What |d| must not exceed for the patch to be settled: its upper bound below the upper
+  // target, its lower bound above the lower one, whichever its side asks.
+  const double for_upper = targets.upper, for_lower = -targets.lower;
+  const double either_side = std::min(for_upper, for_lower);
+  const auto lower_upper_abs = [&](double enough_abs) {
+    patch.upper_abs = std::min(
+        patch.upper_abs, nearby_upper_abs(patch, nearby, targets.width, enough_abs, slack) + slack);
+  };
+  // Corners well within what settles the patch on either side: |d| bounded closely may settle
+  // it without its side, at less cost than the side proofs among many nearby triangles (a
+  // coarse nominal patch over a finely tessellated workpiece).
+  double largest = 0;
+  for (const PatchCorner& c : patch.corners) largest = std::max(largest, std::fabs(c.d));
+  const bool bounded_first = patch.side == 0 && largest <= 0.5 * either_side;
+  if (bounded_first) {
+    lower_upper_abs(either_side);
+    if (patch.upper_abs <= either_side) return;
+  }
   if (side_is_continuous && patch.side == 0) prove_side(patch, nearby, slack);
   if (side_is_continuous && patch.side == 0) {
     prove_side_by_prism(patch, nearby, witness, targets.width, slack);
   }
-  // What |d| must not exceed for the patch to be settled: its upper bound below the upper
-  // target, its lower bound above the lower one, whichever its side asks.
-  const double for_upper = targets.upper, for_lower = -targets.lower;
-  const double enough_abs = patch.side > 0   ? for_upper
-                            : patch.side < 0 ? for_lower
-                                             : std::min(for_upper, for_lower);
-  if (patch.upper_abs <= enough_abs) return;
-  patch.upper_abs = std::min(
-      patch.upper_abs, nearby_upper_abs(patch, nearby, targets.width, enough_abs, slack) + slack);
+  const double enough_abs = patch.side > 0 ? for_upper : patch.side < 0 ? for_lower : either_side;
+  if (patch.upper_abs <= enough_abs || bounded_first) return;
+  lower_upper_abs(enough_abs);
 }
 
 NearbyTriangles::NearbyTriangles(const SearchIndex& index)

@@ -65,7 +65,9 @@ class NearbyTriangles {
   explicit NearbyTriangles(const SearchIndex& index);
   std::span<const TriangleCorners> triangles() const { return index_.triangles(); }
   // Calls visit(t) once for every triangle listed in a cell that meets the patch's box grown
-  // by `reach`; returns false, visiting none, when that box spans more than `max_cells`.
+  // by `reach` whose own box comes within `reach` of the patch's (a long sliver listed in
+  // the cells but far from the patch is left out); returns false, visiting none, when that
+  // grown box spans more than `max_cells`.
   template <class Visit>
   bool for_each(const Patch& patch, double reach, std::uint64_t max_cells, Visit&& visit);
 
@@ -102,12 +104,11 @@ bool NearbyTriangles::for_each(const Patch& patch, double reach, std::uint64_t m
   const BackgroundGrid& grid = index_.grid();
   std::array<std::int64_t, 3> lo{}, hi{};
   std::uint64_t cells = 1;
+  BoundingBox box;
+  for (const PatchCorner& c : patch.corners) box.extend(c.point);
+  const std::span<const TriangleCorners> reference = index_.triangles();
   for (int axis = 0; axis < 3; ++axis) {
-    double low = patch.corners[0].point[axis], high = low;
-    for (const PatchCorner& c : patch.corners) {
-      low = std::min(low, c.point[axis]);
-      high = std::max(high, c.point[axis]);
-    }
+    const double low = box.min[axis], high = box.max[axis];
     const double last = static_cast<double>(grid.dims[axis]) - 1;
     const double first_cell = std::floor((low - reach - grid.origin[axis]) / grid.cell_size);
     const double last_cell = std::floor((high + reach - grid.origin[axis]) / grid.cell_size);
@@ -133,6 +134,9 @@ bool NearbyTriangles::for_each(const Patch& patch, double reach, std::uint64_t m
           const std::uint32_t t = grid.cell_triangles[e];
           if (stamps_[t] == epoch_) continue;
           stamps_[t] = epoch_;
+          BoundingBox triangle_box;
+          for (const Vec3& p : reference[t]) triangle_box.extend(p);
+          if (box_gap(box, triangle_box) > reach) continue;
           visit(t);
         }
       }
