@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "certify/patch_bounds.hpp"
+#include "certify/triangle_cover.hpp"
 #include "sampling/lattice_triangles.hpp"
 #include "sampling/sample_normals.hpp"
 #include "search/closest_point_search.hpp"
@@ -22,6 +23,13 @@ namespace {
 // sub-triangle, about the rounding slack of the coordinates, and splitting says no more.
 constexpr std::uint32_t kMaxDepth = 30;
 constexpr std::size_t kTriangleBlock = 1024;
+// Open patches a sampled triangle must have before they are bounded once for all of them
+// (TriangleCover): fewer cost less one by one.
+constexpr std::size_t kLeastPatchesPerCover = 8;
+// Search grid cells the triangle's gathering may visit: a few per open patch, so that its
+// cost stays that of the patches it bounds.
+constexpr std::uint64_t kCoverCellsPerPatch = 64;
+constexpr std::uint64_t kMaxNearbyCellsPerTriangle = 512;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The rounding slack of distances computed on coordinates of magnitude `scale`: the search's
@@ -111,6 +119,7 @@ class Certifier {
     measured_ = held_extremes();
     for (const auto& [sample, corner] : extra_) measured_.add(corner.d, global(corner.point));
     std::vector<Patch> open = bound_lattice();
+    open = bound_by_triangle(std::move(open));
     refine(std::move(open));
     return certificate();
   }
@@ -294,6 +303,73 @@ class Certifier {
     return std::move(pass.open);
   }
 
+  // The normal a point of the sampled triangle is measured with (the paper's sign only).
+  Vec3 normal_of(std::uint32_t t) const {
+    return vertex_normals_.empty() ? Vec3(0, 0, 0) : normalized(area_vector(samples_.mesh, t));
+  }
+
+  // The open patches of a triangle with many: bounded by what the whole triangle proves
+  // (TriangleCover) before each is bounded by its own nearby triangles; the still open ones
+  // are returned, in order.
+  std::vector<Patch> bound_by_triangle(std::vector<Patch> open) {
+    std::vector<std::pair<std::size_t, std::size_t>> runs;
+    for (std::size_t i = 0; i < open.size();) {
+      std::size_t j = i;
+      while (j < open.size() && open[j].triangle == open[i].triangle) ++j;
+      if (j - i >= kLeastPatchesPerCover) runs.emplace_back(i, j);
+      i = j;
+    }
+    const Mesh& mesh = samples_.mesh;
+    std::vector<std::vector<PatchCorner>> measured(runs.size());
+    const std::uint64_t points_per_run = runs.empty() ? 0 : (cap_ - added_) / runs.size();
+    tbb::parallel_for(std::size_t{0}, runs.size(), [&](std::size_t r) {
+      const auto [begin, end] = runs[r];
+      const std::uint32_t t = open[begin].triangle;
+      double largest = 0;
+      for (std::size_t k = begin; k < end; ++k) {
+        for (const PatchCorner& c : open[k].corners) largest = std::max(largest, std::fabs(c.d));
+      }
+      const TriangleCorners corners = {surface_.to_local(mesh.corner(t, 0)),
+                                       surface_.to_local(mesh.corner(t, 1)),
+                                       surface_.to_local(mesh.corner(t, 2))};
+      double longest = 0;
+      for (int k = 0; k < 3; ++k)
+        longest = std::max(longest, norm(corners[(k + 1) % 3] - corners[k]));
+      TriangleCoverOptions options;
+      options.cutoff = 2 * largest + width_;
+      options.width = width_;
+      options.cell = longest / (samples_.lattice_sizes[t] - 1);
+      options.beyond = largest;
+      options.max_points = points_per_run;
+      options.max_cells = kMaxNearbyCellsPerTriangle + kCoverCellsPerPatch * (end - begin);
+      options.side_is_continuous = continuous_;
+      options.slack = slack_;
+      PointProbe& probe = probes_.local();
+      const SideWitness witness = [&](Vec3 p) { return probe.measure(p, Vec3(0, 0, 0)).d; };
+      const std::optional<TriangleCover> cover =
+          TriangleCover::build(corners, nearby_.local(), witness, options);
+      if (!cover) return;
+      for (std::size_t k = begin; k < end; ++k) cover->bound(open[k]);
+      for (const Vec3& p : cover->points_to_measure()) {
+        measured[r].push_back(probe.measure(p, normal_of(t)));
+      }
+    });
+    // The points measured, in order: the extremes they reach widen the targets.
+    for (const std::vector<PatchCorner>& points : measured) {
+      for (const PatchCorner& c : points) measured_.add(c.d, global(c.point));
+      added_ += points.size();
+    }
+    std::vector<Patch> still;
+    for (const Patch& p : open) {
+      if (is_open(p)) {
+        still.push_back(p);
+      } else {
+        fold_.add(p, false, surface_.origin());
+      }
+    }
+    return still;
+  }
+
   // How far a patch's bounds lie beyond the measured extremes and the width asked.
   double excess(const Patch& p) const {
     return std::max(p.upper() - (measured_.max + width_), (measured_.min - width_) - p.lower());
@@ -354,9 +430,7 @@ class Certifier {
     const auto reference = index_.triangles();
     tbb::parallel_for(std::size_t{0}, parents.size(), [&](std::size_t k) {
       const Patch& p = parents[k];
-      const Vec3 normal = vertex_normals_.empty()
-                              ? Vec3(0, 0, 0)
-                              : normalized(area_vector(samples_.mesh, p.triangle));
+      const Vec3 normal = normal_of(p.triangle);
       PointProbe& probe = probes_.local();
       const auto& c = p.corners;
       const PatchCorner ab = probe.measure(0.5 * (c[0].point + c[1].point), normal);

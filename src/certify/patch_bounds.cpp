@@ -118,6 +118,67 @@ bool strictly_inside(Vec3 p, Vec3 a, Vec3 b, Vec3 c, Vec3 n) {
   return (s1 > 0 && s2 > 0 && s3 > 0) || (s1 < 0 && s2 < 0 && s3 < 0);
 }
 
+}  // namespace
+
+bool shadows_cover(std::span<const TriangleCorners> reference, std::span<const std::uint32_t> cover,
+                   Vec3 n, const TriangleCorners& shrunk, double slack) {
+  const Vec3 o = shrunk[0];
+  const auto onto_plane = [&](Vec3 p) { return p - dot(n, p - o) * n; };
+  const Vec3 middle = (shrunk[0] + shrunk[1] + shrunk[2]) / 3.0;
+  BoundingBox shrunk_box;
+  for (const Vec3& v : shrunk) shrunk_box.extend(v);
+  // A point of the shrunk patch inside one of them: its centre, or one between the centre and a
+  // corner when the centre lies on an edge (lattices and meshes often share their grid lines).
+  const std::array<Vec3, 4> probes = {middle, 0.5 * (middle + shrunk[0]),
+                                      0.5 * (middle + shrunk[1]), 0.5 * (middle + shrunk[2])};
+  const bool some_inside = std::any_of(probes.begin(), probes.end(), [&](Vec3 probe) {
+    return std::any_of(cover.begin(), cover.end(), [&](std::uint32_t t) {
+      const TriangleCorners& r = reference[t];
+      return strictly_inside(probe, onto_plane(r[0]), onto_plane(r[1]), onto_plane(r[2]), n);
+    });
+  });
+  if (!some_inside) return false;
+  // Every edge by its end points in order, with the apex of its triangle.
+  struct Edge {
+    std::array<double, 6> ends;
+    Vec3 apex;
+  };
+  // Only the edges whose shadow comes near the shrunk patch's matter, outline or not.
+  std::vector<Edge> edges;
+  for (const std::uint32_t t : cover) {
+    for (int k = 0; k < 3; ++k) {
+      Vec3 p = reference[t][k], q = reference[t][(k + 1) % 3];
+      BoundingBox shadow;
+      shadow.extend(onto_plane(p));
+      shadow.extend(onto_plane(q));
+      if (box_gap(shadow, shrunk_box) > slack) continue;
+      if (std::tie(q[0], q[1], q[2]) < std::tie(p[0], p[1], p[2])) std::swap(p, q);
+      edges.push_back({{p[0], p[1], p[2], q[0], q[1], q[2]}, reference[t][(k + 2) % 3]});
+    }
+  }
+  std::sort(edges.begin(), edges.end(),
+            [](const Edge& x, const Edge& y) { return x.ends < y.ends; });
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j].ends == edges[i].ends) ++j;
+    const auto& e = edges[i].ends;
+    const Vec3 p = onto_plane(Vec3(e[0], e[1], e[2])), q = onto_plane(Vec3(e[3], e[4], e[5]));
+    bool inner = j - i == 2;
+    if (inner) {
+      const double side_a = dot(n, cross(q - p, onto_plane(edges[i].apex) - p));
+      const double side_b = dot(n, cross(q - p, onto_plane(edges[i + 1].apex) - p));
+      inner = side_a * side_b < 0;
+    }
+    if (!inner && !(triangle_distance_lower_bound({p, q, q}, shrunk, slack) > slack)) {
+      return false;
+    }
+    i = j;
+  }
+  return true;
+}
+
+namespace {
+
 // The reference triangles near a patch that lie within `cutoff` of its plane, seen from that
 // plane, cover the patch (shrunk towards its centre by `margin`): then every point of the
 // patch has a point of one of them straight above or below it, at most their greatest
@@ -165,56 +226,7 @@ std::optional<double> covering_bound(const Patch& patch, NearbyTriangles& nearby
   for (int k = 0; k < 3; ++k) {
     shrunk[k] = onto_plane(centre + (1 - shrink) * (c[k].point - centre));
   }
-  const Vec3 middle = (shrunk[0] + shrunk[1] + shrunk[2]) / 3.0;
-  BoundingBox shrunk_box;
-  for (const Vec3& v : shrunk) shrunk_box.extend(v);
-  // A point of the shrunk patch inside one of them: its centre, or one between the centre and a
-  // corner when the centre lies on an edge (lattices and meshes often share their grid lines).
-  const std::array<Vec3, 4> probes = {middle, 0.5 * (middle + shrunk[0]),
-                                      0.5 * (middle + shrunk[1]), 0.5 * (middle + shrunk[2])};
-  const bool some_inside = std::any_of(probes.begin(), probes.end(), [&](Vec3 probe) {
-    return std::any_of(cover.begin(), cover.end(), [&](std::uint32_t t) {
-      const TriangleCorners& r = reference[t];
-      return strictly_inside(probe, onto_plane(r[0]), onto_plane(r[1]), onto_plane(r[2]), n);
-    });
-  });
-  if (!some_inside) return std::nullopt;
-  // Every edge by its end points in order, with the apex of its triangle.
-  struct Edge {
-    std::array<double, 6> ends;
-    Vec3 apex;
-  };
-  // Only the edges whose shadow comes near the shrunk patch's matter, outline or not.
-  std::vector<Edge> edges;
-  for (const std::uint32_t t : cover) {
-    for (int k = 0; k < 3; ++k) {
-      Vec3 p = reference[t][k], q = reference[t][(k + 1) % 3];
-      BoundingBox shadow;
-      shadow.extend(onto_plane(p));
-      shadow.extend(onto_plane(q));
-      if (box_gap(shadow, shrunk_box) > slack) continue;
-      if (std::tie(q[0], q[1], q[2]) < std::tie(p[0], p[1], p[2])) std::swap(p, q);
-      edges.push_back({{p[0], p[1], p[2], q[0], q[1], q[2]}, reference[t][(k + 2) % 3]});
-    }
-  }
-  std::sort(edges.begin(), edges.end(),
-            [](const Edge& x, const Edge& y) { return x.ends < y.ends; });
-  for (std::size_t i = 0; i < edges.size();) {
-    std::size_t j = i;
-    while (j < edges.size() && edges[j].ends == edges[i].ends) ++j;
-    const auto& e = edges[i].ends;
-    const Vec3 p = onto_plane(Vec3(e[0], e[1], e[2])), q = onto_plane(Vec3(e[3], e[4], e[5]));
-    bool inner = j - i == 2;
-    if (inner) {
-      const double side_a = dot(n, cross(q - p, onto_plane(edges[i].apex) - p));
-      const double side_b = dot(n, cross(q - p, onto_plane(edges[i + 1].apex) - p));
-      inner = side_a * side_b < 0;
-    }
-    if (!inner && !(triangle_distance_lower_bound({p, q, q}, shrunk, slack) > slack)) {
-      return std::nullopt;
-    }
-    i = j;
-  }
+  if (!shadows_cover(reference, cover, n, shrunk, slack)) return std::nullopt;
   return patch_height + highest + rim;
 }
 
@@ -300,6 +312,26 @@ void prove_side(Patch& patch, NearbyTriangles& nearby, double slack) {
   patch.lower_abs = std::max(patch.lower_abs, least);
 }
 
+}  // namespace
+
+int free_prism_side(std::span<const TriangleCorners> reference, std::span<const std::uint32_t> near,
+                    const TriangleCorners& shrunk, Vec3 n, double low, double high,
+                    const SideWitness& witness, double slack) {
+  const Vec3 centre = (shrunk[0] + shrunk[1] + shrunk[2]) / 3.0;
+  for (const double direction : {1.0, -1.0}) {
+    const Prism prism{shrunk, direction * n, low, high};
+    if (std::any_of(near.begin(), near.end(), [&](std::uint32_t t) {
+          return triangle_meets_prism(reference[t], prism, slack);
+        })) {
+      continue;
+    }
+    return side_of(witness(centre + (direction * 0.5 * (low + high)) * n));
+  }
+  return 0;
+}
+
+namespace {
+
 // The side proof where the patch touches the reference from one side (docs/CERTIFICATION.md
 // "Contact"): a face machined exactly to the nominal, the line where it meets a face left
 // higher. Over the patch shrunk by `margin`, a prism from height `low` to `high` on one side
@@ -328,28 +360,18 @@ void prove_side_by_prism(Patch& patch, NearbyTriangles& nearby, const SideWitnes
   const double shrink = margin / radius;
   TriangleCorners shrunk;
   for (int k = 0; k < 3; ++k) shrunk[k] = centre + (1 - shrink) * (c[k].point - centre);
+  const int side =
+      free_prism_side(nearby.triangles(), near, shrunk, normal, low, high, witness, slack);
   const double reached = -(low + margin * (1 + 1e-12) + 2 * slack);
-  const std::span<const TriangleCorners> reference = nearby.triangles();
-  for (const double direction : {1.0, -1.0}) {
-    const Prism prism{shrunk, direction * normal, low, high};
-    if (std::any_of(near.begin(), near.end(), [&](std::uint32_t t) {
-          return triangle_meets_prism(reference[t], prism, slack);
-        })) {
-      continue;
-    }
-    const double d = witness(centre + (direction * 0.5 * (low + high)) * normal);
-    const int side = side_of(d);
-    // A corner beyond what the proof allows would mean the surface is not what the sign
-    // assumes (it is proven closed and oriented); prove nothing then.
-    if (side == 0 || std::any_of(c.begin(), c.end(), [&](const PatchCorner& corner) {
-          return side * corner.d < reached;
-        })) {
-      return;
-    }
-    patch.side = side;
-    patch.lower_abs = reached;
+  // A corner beyond what the proof allows would mean the surface is not what the sign
+  // assumes (it is proven closed and oriented); prove nothing then.
+  if (side == 0 || std::any_of(c.begin(), c.end(), [&](const PatchCorner& corner) {
+        return side * corner.d < reached;
+      })) {
     return;
   }
+  patch.side = side;
+  patch.lower_abs = reached;
 }
 
 }  // namespace
@@ -365,12 +387,17 @@ void bound_by_nearby(Patch& patch, NearbyTriangles& nearby, const SideWitness& w
     patch.upper_abs = std::min(
         patch.upper_abs, nearby_upper_abs(patch, nearby, targets.width, enough_abs, slack) + slack);
   };
-  // Corners well within what settles the patch on either side: |d| bounded closely may settle
-  // it without its side, at less cost than the side proofs among many nearby triangles (a
-  // coarse nominal patch over a finely tessellated workpiece).
-  double largest = 0;
-  for (const PatchCorner& c : patch.corners) largest = std::max(largest, std::fabs(c.d));
-  const bool bounded_first = patch.side == 0 && largest <= 0.5 * either_side;
+  // Corners well within what settles the patch on either side, none on the reference: |d|
+  // bounded closely may settle it without its side, at less cost than the side proofs among
+  // many nearby triangles (a coarse nominal patch over a finely tessellated workpiece). A
+  // corner on the reference (a contact) asks for the prism's side proof first, which is
+  // cheaper there.
+  double largest = 0, least = INFINITY;
+  for (const PatchCorner& c : patch.corners) {
+    largest = std::max(largest, std::fabs(c.d));
+    least = std::min(least, std::fabs(c.d));
+  }
+  const bool bounded_first = patch.side == 0 && largest <= 0.5 * either_side && least > slack;
   if (bounded_first) {
     lower_upper_abs(either_side);
     if (patch.upper_abs <= either_side) return;

@@ -69,7 +69,14 @@ class NearbyTriangles {
   // the cells but far from the patch is left out); returns false, visiting none, when that
   // grown box spans more than `max_cells`.
   template <class Visit>
-  bool for_each(const Patch& patch, double reach, std::uint64_t max_cells, Visit&& visit);
+  bool for_each(const Patch& patch, double reach, std::uint64_t max_cells, Visit&& visit) {
+    BoundingBox box;
+    for (const PatchCorner& c : patch.corners) box.extend(c.point);
+    return for_each(box, reach, max_cells, visit);
+  }
+  // The same around a box.
+  template <class Visit>
+  bool for_each(const BoundingBox& box, double reach, std::uint64_t max_cells, Visit&& visit);
 
  private:
   const SearchIndex& index_;
@@ -85,9 +92,25 @@ struct NearbyTargets {
   double width = 0;
 };
 
+// Whether the shadows on the plane (unit normal n) of the reference triangles `cover` cover the
+// triangle `shrunk`, which lies in that plane: a point of it lies strictly inside one of
+// them and no edge of their union's outline comes within the slack of it
+// (docs/CERTIFICATION.md "Covering triangles").
+bool shadows_cover(std::span<const TriangleCorners> reference, std::span<const std::uint32_t> cover,
+                   Vec3 n, const TriangleCorners& shrunk, double slack);
+
 // A point's signed distance to the reference, measured as a sample's is: the witness of the
 // side of a prism no reference triangle meets.
 using SideWitness = std::function<double(Vec3)>;
+
+// The side of the reference the right prism over `shrunk` (a triangle with unit normal n)
+// from height `low` to `high` lies on, on either side of its plane, when none of the `near`
+// reference triangles meets it (all those within its reach must be among them): +1 outside,
+// -1 inside, as a point of it measures; 0 when both prisms meet one (docs/CERTIFICATION.md
+// "The side at a contact").
+int free_prism_side(std::span<const TriangleCorners> reference, std::span<const std::uint32_t> near,
+                    const TriangleCorners& shrunk, Vec3 n, double low, double high,
+                    const SideWitness& witness, double slack);
 
 // The bounds from the reference triangles near the patch: proves the side where the patch
 // does not touch the reference, raising lower_abs to the least patch-triangle distance, or
@@ -99,13 +122,11 @@ void bound_by_nearby(Patch& patch, NearbyTriangles& nearby, const SideWitness& w
                      const NearbyTargets& targets, double slack, bool side_is_continuous);
 
 template <class Visit>
-bool NearbyTriangles::for_each(const Patch& patch, double reach, std::uint64_t max_cells,
+bool NearbyTriangles::for_each(const BoundingBox& box, double reach, std::uint64_t max_cells,
                                Visit&& visit) {
   const BackgroundGrid& grid = index_.grid();
   std::array<std::int64_t, 3> lo{}, hi{};
   std::uint64_t cells = 1;
-  BoundingBox box;
-  for (const PatchCorner& c : patch.corners) box.extend(c.point);
   const std::span<const TriangleCorners> reference = index_.triangles();
   for (int axis = 0; axis < 3; ++axis) {
     const double low = box.min[axis], high = box.max[axis];

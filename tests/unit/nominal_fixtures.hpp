@@ -184,4 +184,54 @@ inline Vec3 random_point_on(std::mt19937_64& rng, const Mesh& mesh, std::size_t 
   return a + u * (mesh.corner(t, 1) - a) + v * (mesh.corner(t, 2) - a);
 }
 
+// A block [0, length] x [0, width] x [0, height] whose top is `scallops` ball-end scallops
+// across x: circular arcs of radius `radius`, `facets` chords each, their troughs at `height`
+// and their cusps above; the top in long strips across y, as CAM meshes leave it. Closed,
+// outward, welded.
+inline Mesh scalloped_block(double length, double width, double height, int scallops, double radius,
+                            int facets) {
+  std::vector<std::pair<double, double>> profile;  // (x, z) along the top
+  const double pitch = length / scallops;
+  for (int s = 0; s < scallops; ++s) {
+    for (int f = 0; f < facets; ++f) {
+      const double x = s * pitch + pitch * f / facets;
+      const double offset = x - (s + 0.5) * pitch;  // from the trough under the ball's centre
+      profile.push_back({x, height + radius - std::sqrt(radius * radius - offset * offset)});
+    }
+  }
+  // The cusp at x = length, as at x = 0.
+  profile.push_back({length, profile.front().second});
+  Mesh mesh;
+  const auto vertex = [&](double x, double y, double z) {
+    mesh.vertices.push_back({x, y, z});
+    return static_cast<std::uint32_t>(mesh.vertices.size() - 1);
+  };
+  const std::size_t n = profile.size();
+  std::vector<std::uint32_t> top0, top1, bottom0, bottom1;
+  for (const auto& [x, z] : profile) {
+    top0.push_back(vertex(x, 0, z));
+    top1.push_back(vertex(x, width, z));
+    bottom0.push_back(vertex(x, 0, 0));
+    bottom1.push_back(vertex(x, width, 0));
+  }
+  // A quad as two triangles, turned to face `outward`.
+  const auto quad = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d,
+                        Vec3 outward) {
+    const Vec3 normal =
+        cross(mesh.vertices[b] - mesh.vertices[a], mesh.vertices[c] - mesh.vertices[a]);
+    if (dot(normal, outward) < 0) std::swap(b, d);
+    mesh.triangles.push_back({a, b, c});
+    mesh.triangles.push_back({a, c, d});
+  };
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    quad(top0[i], top0[i + 1], top1[i + 1], top1[i], {0, 0, 1});
+    quad(bottom0[i], bottom1[i], bottom1[i + 1], bottom0[i + 1], {0, 0, -1});
+    quad(bottom0[i], bottom0[i + 1], top0[i + 1], top0[i], {0, -1, 0});
+    quad(bottom1[i], top1[i], top1[i + 1], bottom1[i + 1], {0, 1, 0});
+  }
+  quad(bottom0[0], top0[0], top1[0], bottom1[0], {-1, 0, 0});
+  quad(bottom0[n - 1], bottom1[n - 1], top1[n - 1], top0[n - 1], {1, 0, 0});
+  return mesh;
+}
+
 }  // namespace ncv::fixtures

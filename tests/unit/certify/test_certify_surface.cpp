@@ -141,6 +141,37 @@ TEST_CASE("a face machined exactly to the nominal beside an uncut slot is certif
   }
 }
 
+TEST_CASE("a coarse face over a finely facetted scallop surface is certified to the width",
+          "[certify]") {
+  // Twenty scallops 1 wide, cut by a ball of radius 3 (cusps 0.042 high), each arc in 8
+  // strips across the block: the nominal's two top triangles hold hundreds of patches each
+  // over reference strips much finer than the patch (bounded per triangle: TriangleCover).
+  const Mesh scalloped = fixtures::scalloped_block(20, 6, 5, 20, 3.0, 8);
+  const Mesh flat = fixtures::box({0, 0, 0}, {20, 6, 5});
+  const double width = 0.001;
+  SECTION("from the nominal: its top lies under the scallops, touching their troughs") {
+    const IndexedReference workpiece = index_reference(scalloped, "scallops");
+    const Certified c = certify(flat, workpiece, 0.7, CertifyOptions{width, 0});
+    CHECK(c.certificate.unresolved == 0);
+    CHECK(c.certificate.min.width() <= width);
+    CHECK(c.certificate.max.width() <= width);
+    const auto [true_max, true_min] = dense_extremes(flat, workpiece, 2000);
+    CHECK(c.certificate.max.bound >= true_max);
+    CHECK(c.certificate.min.bound <= true_min);
+    // Settled per triangle: few points added, few patches split.
+    CAPTURE(c.certificate.added_points, c.certificate.refined_patches, c.certificate.patches);
+    CHECK(c.certificate.refined_patches * 100 < c.certificate.patches);
+  }
+  SECTION("from the workpiece") {
+    const IndexedReference nominal = index_reference(flat, "flat");
+    const Certified c = certify(scalloped, nominal, 0.3, CertifyOptions{width, 0});
+    CHECK(c.certificate.unresolved == 0);
+    const auto [true_max, true_min] = dense_extremes(scalloped, nominal, 400);
+    CHECK(c.certificate.max.bound >= true_max);
+    CHECK(c.certificate.min.bound <= true_min);
+  }
+}
+
 TEST_CASE("the certificate does not depend on the thread count", "[certify]") {
   const IndexedReference nominal = index_reference(fixtures::torus(10, 3.2, 48, 24), "torus");
   const Mesh workpiece = fixtures::torus(10, 3, 30, 14);
