@@ -253,6 +253,33 @@ class Certifier {
     return global((corner(a).point + corner(b).point + corner(c).point) / 3.0);
   }
 
+  // A whole lattice triangle bounded from its samples' extremes (Lipschitz: every point of it
+  // lies within `cover` of one of them): where that settles it, which it does for most of a
+  // surface away from its extremes, its patches need no bounds of their own; they are
+  // counted, and the triangle's bounds folded. A patch's own bounds are never looser.
+  bool settled_as_whole(std::uint32_t t, double cover, BoundFold& fold) const {
+    const std::uint32_t n = samples_.lattice_sizes[t];
+    double high = -kInfinity, low = kInfinity;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      for (std::uint32_t j = 0; i + j < n; ++j) {
+        const double d = value(samples_.sample_at(t, i, j)).first;
+        high = std::max(high, d);
+        low = std::min(low, d);
+      }
+    }
+    const double largest = std::max(std::fabs(high), std::fabs(low)) + cover;
+    const double upper = continuous_ ? high + cover : largest;
+    const double lower = continuous_ ? low - cover : -largest;
+    if (is_open(upper, lower)) return false;
+    fold.patches += std::uint64_t{n - 1} * (n - 1);
+    if (upper > fold.bounds.max || lower < fold.bounds.min) {
+      const Mesh& mesh = samples_.mesh;
+      const Vec3 centre = (mesh.corner(t, 0) + mesh.corner(t, 1) + mesh.corner(t, 2)) / 3.0;
+      fold.bounds.add(upper, centre, lower, centre);
+    }
+    return true;
+  }
+
   // Every lattice sub-triangle of the covered triangles bounded from its corners; the open
   // ones are returned, in lattice order.
   std::vector<Patch> bound_lattice() {
@@ -269,6 +296,7 @@ class Certifier {
                 covering_radius(mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2)) / steps *
                     (1 + 1e-12) +
                 slack_;
+            if (settled_as_whole(t, cover, part.fold)) continue;
             for_each_lattice_triangle(
                 samples_, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
                   ++part.fold.patches;

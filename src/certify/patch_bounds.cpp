@@ -350,7 +350,7 @@ void prove_side_by_prism(Patch& patch, NearbyTriangles& nearby, const SideWitnes
   const double margin = 0.25 * width;
   if (normal == Vec3(0, 0, 0) || !(radius > margin)) return;
   const double low = std::max(0.25 * width, 16 * slack);
-  const double high = low + std::max(patch.upper_abs, low);
+  const double high = 2 * low;
   std::vector<std::uint32_t> near;
   if (!nearby.for_each(patch, high + 2 * slack, kMaxNearbyCells,
                        [&](std::uint32_t t) { near.push_back(t); }) ||
