@@ -422,7 +422,7 @@ def main():
     p("")
     p("== The finishing job's two directions, 1 vs 2 threads (median of runs) ==")
     p(f"{'threads':<8}{'direction':<10}{'samples':>10}{'sample s':>10}{'grid s':>9}"
-      f"{'distance s':>11}{'M samples/s':>12}{'tested':>8}")
+      f"{'distance s':>11}{'M samples/s':>12}{'tested':>8}{'certify s':>10}{'/ distance':>11}")
     for label, t in (("1", fin1), ("2", fin2)):
         for name, prefix, samples, tested in (
                 ("forward", "", t["samples"], t["triangles_tested_per_sample"]),
@@ -431,9 +431,12 @@ def main():
             if not samples:
                 continue
             ph = t["phases"]
+            certify = ph.get(prefix + "certify", 0)
             p(f"{label:<8}{name:<10}{samples:>10}{ph[prefix + 'sample']:>10.3f}"
               f"{ph[prefix + 'grid-build']:>9.3f}{ph[prefix + 'distance']:>11.3f}"
-              f"{samples / ph[prefix + 'distance'] / 1e6:>12.2f}{tested:>8.2f}")
+              f"{samples / ph[prefix + 'distance'] / 1e6:>12.2f}{tested:>8.2f}"
+              f"{certify:>10.3f}{certify / ph[prefix + 'distance']:>10.2f}x")
+    p("  certify: bounds between the samples (issue 20 asks at most 0.25 x the distance phase)")
     p("")
     p("== The finishing job as five commands, 2 threads (median of reruns into one folder, s) ==")
     p("".join(f"{name:>11}" for name in steps_alone) + f"{'total':>9}")
