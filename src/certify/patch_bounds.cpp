@@ -44,7 +44,46 @@ int common_side(const Patch& patch) {
   return s;
 }
 
-// Convexity: min over the corners' closest triangles t of max over corners of dist(c, t).
+// Convexity with two triangles that share an edge and together make a convex, nearly flat
+// quadrilateral (a CAD face split along its diagonal), for a patch across that diagonal: the
+// second laid into the first's plane (its apex moved by eps, so every point of it by at most
+// eps) makes with the first one convex planar set Q, whose distance is convex, so |d| <=
+// dist(x, Q) + eps <= max over the corners of dist(c, Q) + eps (docs/CERTIFICATION.md).
+std::optional<double> flat_pair_upper_abs(const Patch& patch, const TriangleCorners& a,
+                                          const TriangleCorners& b) {
+  int shared = 0, apex_a = -1, apex_b = -1;
+  for (int i = 0; i < 3; ++i) {
+    bool found = false;
+    for (int k = 0; k < 3; ++k) found = found || a[i] == b[k];
+    shared += found ? 1 : 0;
+    if (!found) apex_a = i;
+  }
+  for (int k = 0; k < 3; ++k) {
+    if (a[0] != b[k] && a[1] != b[k] && a[2] != b[k]) apex_b = k;
+  }
+  if (shared != 2 || apex_a < 0 || apex_b < 0) return std::nullopt;
+  const Vec3 p = a[apex_a], q = a[(apex_a + 1) % 3], r = a[(apex_a + 2) % 3];
+  const Vec3 n = normalized(cross(q - p, r - p));
+  if (n == Vec3(0, 0, 0)) return std::nullopt;
+  const double eps = std::fabs(dot(n, b[apex_b] - q));
+  const Vec3 s = b[apex_b] - dot(n, b[apex_b] - q) * n;
+  // Convex: the apexes on either side of the shared edge, the edge's ends on either side of
+  // the line between the apexes (or on it).
+  const bool apexes_apart = dot(n, cross(r - q, p - q)) * dot(n, cross(r - q, s - q)) < 0;
+  const bool ends_apart = dot(n, cross(s - p, q - p)) * dot(n, cross(s - p, r - p)) <= 0;
+  if (!apexes_apart || !ends_apart) return std::nullopt;
+  const TriangleCorners laid = {q, r, s};
+  double largest = 0;
+  for (const PatchCorner& c : patch.corners) {
+    largest =
+        std::max(largest, std::min(closest_point_on_triangle(c.point, a).squared_distance,
+                                   closest_point_on_triangle(c.point, laid).squared_distance));
+  }
+  return std::sqrt(largest) + eps;
+}
+
+// Convexity: min over the corners' closest triangles t of max over corners of dist(c, t), and
+// over the pairs of them that make a flat convex quadrilateral.
 double convex_upper_abs(const Patch& patch, std::span<const TriangleCorners> reference) {
   const auto& c = patch.corners;
   if (c[0].face == c[1].face && c[1].face == c[2].face) {
@@ -63,6 +102,15 @@ double convex_upper_abs(const Patch& patch, std::span<const TriangleCorners> ref
       largest = std::max(largest, distance);
     }
     best = std::min(best, largest);
+  }
+  for (int i = 0; i < 3; ++i) {
+    for (int k = i + 1; k < 3; ++k) {
+      if (c[i].face == c[k].face) continue;
+      if (const std::optional<double> pair =
+              flat_pair_upper_abs(patch, reference[c[i].face], reference[c[k].face])) {
+        best = std::min(best, *pair);
+      }
+    }
   }
   return best;
 }
@@ -248,6 +296,15 @@ double nearby_upper_abs(const Patch& patch, NearbyTriangles& nearby, double widt
   if (near.size() <= kMaxSingleCandidates) {
     for (const std::uint32_t t : near) {
       best = std::min(best, farthest_corner_distance(patch, reference[t]));
+    }
+    // And two by two: a CAD face split along its diagonal, the patch over both halves.
+    for (std::size_t i = 0; i < near.size() && best > largest + width; ++i) {
+      for (std::size_t k = i + 1; k < near.size(); ++k) {
+        if (const std::optional<double> pair =
+                flat_pair_upper_abs(patch, reference[near[i]], reference[near[k]])) {
+          best = std::min(best, *pair);
+        }
+      }
     }
   }
   // Covering triangles as high as twice the corners' |d| (a scallop's crest between corners

@@ -172,6 +172,25 @@ TEST_CASE("a coarse face over a finely facetted scallop surface is certified to 
   }
 }
 
+TEST_CASE("walls reaching above a box's edge are bounded across its faces' diagonals",
+          "[certify]") {
+  // A scalloped block over a box its troughs touch: the workpiece's end walls rise to the
+  // cusps above the nominal's top edge, and their patches (a coarse step) cross the
+  // diagonals of the nominal's end faces (two triangles each), where no single triangle is
+  // near all corners; the two halves together are (flat_pair_upper_abs).
+  const Mesh scalloped = fixtures::scalloped_block(20, 6, 5, 20, 3.0, 8);
+  const IndexedReference nominal = index_reference(fixtures::box({0, 0, 0}, {20, 6, 5}), "box");
+  const Certified c = certify(scalloped, nominal, 3.0, CertifyOptions{0.001, 0});
+  CAPTURE(c.certificate.added_points, c.certificate.refined_patches);
+  CHECK(c.certificate.unresolved == 0);
+  CHECK(c.certificate.max.width() <= 0.001);
+  CHECK(c.certificate.min.bound >= -0.001);
+  CHECK(c.certificate.refined_patches <= 10);
+  const auto [true_max, true_min] = dense_extremes(scalloped, nominal, 400);
+  CHECK(c.certificate.max.bound >= true_max);
+  CHECK(c.certificate.min.bound <= true_min);
+}
+
 TEST_CASE("the certificate does not depend on the thread count", "[certify]") {
   const IndexedReference nominal = index_reference(fixtures::torus(10, 3.2, 48, 24), "torus");
   const Mesh workpiece = fixtures::torus(10, 3, 30, 14);
