@@ -83,6 +83,11 @@ class PointProbe {
     const ClosestHit hit = search_.closest(local, counters_);
     return {local, side_.signed_value(local, hit, normal), hit.triangle};
   }
+  // The side witness of the prism proofs: the same measurement of a point off the surface
+  // (the pseudonormal sign only, which needs no sample normal).
+  SideWitness witness() {
+    return [this](Vec3 p) { return measure(p, Vec3(0, 0, 0)).d; };
+  }
 
  private:
   GridSearcher search_;
@@ -153,7 +158,7 @@ class Certifier {
     if (i == 0 && j == 0) return normalized(vertex_normals_[mesh.triangles[t][0]]);
     if (i == n - 1 && j == 0) return normalized(vertex_normals_[mesh.triangles[t][1]]);
     if (i == 0 && j == n - 1) return normalized(vertex_normals_[mesh.triangles[t][2]]);
-    return normalized(area_vector(mesh, t));
+    return normal_of(static_cast<std::uint32_t>(t));
   }
 
   // Corners of covered triangles that another shard holds: measured again here.
@@ -373,7 +378,7 @@ class Certifier {
       options.side_is_continuous = continuous_;
       options.slack = slack_;
       PointProbe& probe = probes_.local();
-      const SideWitness witness = [&](Vec3 p) { return probe.measure(p, Vec3(0, 0, 0)).d; };
+      const SideWitness witness = probe.witness();
       const std::optional<TriangleCover> cover =
           TriangleCover::build(corners, nearby_.local(), witness, options);
       if (!cover) return;
@@ -414,7 +419,7 @@ class Certifier {
       tbb::parallel_for(std::size_t{0}, open.size(), [&](std::size_t k) {
         if (!open[k].near_checked) {
           PointProbe& probe = probes_.local();
-          const SideWitness witness = [&](Vec3 p) { return probe.measure(p, Vec3(0, 0, 0)).d; };
+          const SideWitness witness = probe.witness();
           bound_by_nearby(open[k], nearby_.local(), witness, targets, slack_, continuous_);
         }
       });

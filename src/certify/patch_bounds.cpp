@@ -130,6 +130,36 @@ double covering_radius(Vec3 a, Vec3 b, Vec3 c) {
   return std::max(circumradius, 0.5 * std::sqrt(longest));
 }
 
+ShrunkTriangle shrink_towards_centre(const TriangleCorners& triangle, double margin) {
+  const Vec3 centre = (triangle[0] + triangle[1] + triangle[2]) / 3.0;
+  ShrunkTriangle shrunk;
+  for (const Vec3& p : triangle) shrunk.radius = std::max(shrunk.radius, norm(p - centre));
+  const double shrink = shrunk.radius > margin ? margin / shrunk.radius : 1.0;
+  shrunk.rim = shrink * shrunk.radius * (1 + 1e-12);
+  for (int k = 0; k < 3; ++k) shrunk.corners[k] = centre + (1 - shrink) * (triangle[k] - centre);
+  return shrunk;
+}
+
+ContactPrism contact_prism(double width, double slack) {
+  ContactPrism prism;
+  prism.margin = 0.25 * width;
+  prism.low = std::max(0.25 * width, 16 * slack);
+  prism.high = 2 * prism.low;
+  prism.reached = -(prism.low + prism.margin * (1 + 1e-12) + 2 * slack);
+  return prism;
+}
+
+void take_side(Patch& patch, int side, double reached) {
+  const auto& c = patch.corners;
+  if (side == 0 || std::any_of(c.begin(), c.end(), [&](const PatchCorner& corner) {
+        return side * corner.d < reached;
+      })) {
+    return;
+  }
+  patch.side = side;
+  patch.lower_abs = reached;
+}
+
 void bound_from_corners(Patch& patch, std::span<const TriangleCorners> reference, double slack,
                         bool side_is_continuous) {
   const auto& c = patch.corners;
@@ -265,17 +295,11 @@ std::optional<double> covering_bound(const Patch& patch, NearbyTriangles& nearby
       cover.empty() || cover.size() > kMaxCoveringTriangles) {
     return std::nullopt;
   }
-  const Vec3 centre = patch.centre();
-  double radius = 0;
-  for (const PatchCorner& corner : c) radius = std::max(radius, norm(corner.point - centre));
-  const double shrink = radius > margin ? margin / radius : 1.0;
-  const double rim = shrink * radius * (1 + 1e-12);
-  TriangleCorners shrunk;
-  for (int k = 0; k < 3; ++k) {
-    shrunk[k] = onto_plane(centre + (1 - shrink) * (c[k].point - centre));
-  }
-  if (!shadows_cover(reference, cover, n, shrunk, slack)) return std::nullopt;
-  return patch_height + highest + rim;
+  const ShrunkTriangle shrunk = shrink_towards_centre(patch.points(), margin);
+  TriangleCorners in_plane;
+  for (int k = 0; k < 3; ++k) in_plane[k] = onto_plane(shrunk.corners[k]);
+  if (!shadows_cover(reference, cover, n, in_plane, slack)) return std::nullopt;
+  return patch_height + highest + shrunk.rim;
 }
 
 // The least upper bound on |d| the triangles near the patch give: one triangle by
@@ -401,34 +425,19 @@ void prove_side_by_prism(Patch& patch, NearbyTriangles& nearby, const SideWitnes
                          double width, double slack) {
   const auto& c = patch.corners;
   const Vec3 normal = normalized(cross(c[1].point - c[0].point, c[2].point - c[0].point));
-  const Vec3 centre = patch.centre();
-  double radius = 0;
-  for (const PatchCorner& corner : c) radius = std::max(radius, norm(corner.point - centre));
-  const double margin = 0.25 * width;
-  if (normal == Vec3(0, 0, 0) || !(radius > margin)) return;
-  const double low = std::max(0.25 * width, 16 * slack);
-  const double high = 2 * low;
+  const ContactPrism prism = contact_prism(width, slack);
+  const ShrunkTriangle shrunk = shrink_towards_centre(patch.points(), prism.margin);
+  if (normal == Vec3(0, 0, 0) || !(shrunk.radius > prism.margin)) return;
   std::vector<std::uint32_t> near;
-  if (!nearby.for_each(patch, high + 2 * slack, kMaxNearbyCells,
+  if (!nearby.for_each(patch, prism.high + 2 * slack, kMaxNearbyCells,
                        [&](std::uint32_t t) { near.push_back(t); }) ||
       near.size() > kMaxPrismTriangles) {
     return;
   }
-  const double shrink = margin / radius;
-  TriangleCorners shrunk;
-  for (int k = 0; k < 3; ++k) shrunk[k] = centre + (1 - shrink) * (c[k].point - centre);
-  const int side =
-      free_prism_side(nearby.triangles(), near, shrunk, normal, low, high, witness, slack);
-  const double reached = -(low + margin * (1 + 1e-12) + 2 * slack);
-  // A corner beyond what the proof allows would mean the surface is not what the sign
-  // assumes (it is proven closed and oriented); prove nothing then.
-  if (side == 0 || std::any_of(c.begin(), c.end(), [&](const PatchCorner& corner) {
-        return side * corner.d < reached;
-      })) {
-    return;
-  }
-  patch.side = side;
-  patch.lower_abs = reached;
+  take_side(patch,
+            free_prism_side(nearby.triangles(), near, shrunk.corners, normal, prism.low, prism.high,
+                            witness, slack),
+            prism.reached);
 }
 
 }  // namespace

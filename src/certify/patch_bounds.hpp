@@ -47,7 +47,30 @@ struct Patch {
   double upper() const { return side < 0 ? -lower_abs : upper_abs; }
   double lower() const { return side > 0 ? lower_abs : -upper_abs; }
   Vec3 centre() const { return (corners[0].point + corners[1].point + corners[2].point) / 3.0; }
+  TriangleCorners points() const { return {corners[0].point, corners[1].point, corners[2].point}; }
 };
+
+// A triangle shrunk towards its centre by `margin` at most (to its centre when smaller): every
+// point of the triangle lies within `rim` of the shrunk one, which the coverings and the
+// contact prism prove things of (docs/CERTIFICATION.md).
+struct ShrunkTriangle {
+  TriangleCorners corners;
+  double radius = 0;  // the largest distance from the centre to a corner
+  double rim = 0;
+};
+ShrunkTriangle shrink_towards_centre(const TriangleCorners& triangle, double margin);
+
+// The contact prism for the width asked (docs/CERTIFICATION.md "The side at a contact"): over
+// the patch shrunk by `margin`, from height `low` to `high`; where it proves a side,
+// side * d >= `reached` on the patch.
+struct ContactPrism {
+  double margin = 0, low = 0, high = 0, reached = 0;
+};
+ContactPrism contact_prism(double width, double slack);
+
+// Gives the patch the side a prism proved for a region holding it, unless a corner lies
+// beyond what the proof allows (the surface would not be what the sign assumes).
+void take_side(Patch& patch, int side, double reached);
 
 // The largest distance from a point of triangle abc to the nearest of its corners: the
 // circumradius when the triangle is acute, half its longest edge otherwise.

@@ -66,31 +66,26 @@ std::optional<TriangleCover> TriangleCover::build(const TriangleCorners& triangl
                                                   const SideWitness& witness,
                                                   const TriangleCoverOptions& options) {
   const Vec3 normal = normalized(cross(triangle[1] - triangle[0], triangle[2] - triangle[0]));
-  const Vec3 centre = (triangle[0] + triangle[1] + triangle[2]) / 3.0;
-  double radius = 0;
-  for (const Vec3& p : triangle) radius = std::max(radius, norm(p - centre));
-  const double margin = 0.25 * options.width;
   const double slack = options.slack;
-  if (normal == Vec3(0, 0, 0) || !(radius > margin) || !(options.cell > 0)) return std::nullopt;
-  const double low = std::max(0.25 * options.width, 16 * slack);
-  const double high = 2 * low;
-  BoundingBox box;
-  for (const Vec3& p : triangle) box.extend(p);
+  const ContactPrism prism = contact_prism(options.width, slack);
+  const ShrunkTriangle shrunk = shrink_towards_centre(triangle, prism.margin);
+  if (normal == Vec3(0, 0, 0) || !(shrunk.radius > prism.margin) || !(options.cell > 0)) {
+    return std::nullopt;
+  }
+  const BoundingBox box = BoundingBox::of(triangle);
   std::vector<std::uint32_t> near;
-  if (!nearby.for_each(box, std::max(2 * options.cutoff, high) + 2 * slack, options.max_cells,
+  if (!nearby.for_each(box, std::max(2 * options.cutoff, prism.high) + 2 * slack, options.max_cells,
                        [&](std::uint32_t t) { near.push_back(t); })) {
     return std::nullopt;
   }
-  const double shrink = margin / radius;
-  TriangleCorners shrunk;
-  for (int k = 0; k < 3; ++k) shrunk[k] = centre + (1 - shrink) * (triangle[k] - centre);
   const std::span<const TriangleCorners> reference = nearby.triangles();
 
   TriangleCover cover;
   cover.slack_ = slack;
   if (options.side_is_continuous) {
-    cover.side_ = free_prism_side(reference, near, shrunk, normal, low, high, witness, slack);
-    cover.side_reached_ = -(low + margin * (1 + 1e-12) + 2 * slack);
+    cover.side_ = free_prism_side(reference, near, shrunk.corners, normal, prism.low, prism.high,
+                                  witness, slack);
+    cover.side_reached_ = prism.reached;
   }
 
   // The triangles within the cutoff of the plane, with their greatest height.
@@ -106,7 +101,7 @@ std::optional<TriangleCover> TriangleCover::build(const TriangleCorners& triangl
     }
   }
   TriangleCorners in_plane;
-  for (int k = 0; k < 3; ++k) in_plane[k] = shrunk[k] - height(shrunk[k]) * normal;
+  for (int k = 0; k < 3; ++k) in_plane[k] = shrunk.corners[k] - height(shrunk.corners[k]) * normal;
   if (flat.empty() || !shadows_cover(reference, flat, normal, in_plane, slack)) return cover;
 
   // The map over the triangle's shadow, grown by the rim, in cells of about a patch.
@@ -114,88 +109,74 @@ std::optional<TriangleCover> TriangleCover::build(const TriangleCorners& triangl
   cover.normal_ = normal;
   cover.e1_ = normalized(triangle[1] - triangle[0]);
   cover.e2_ = cross(normal, cover.e1_);
-  double u_low = INFINITY, u_high = -INFINITY, v_low = INFINITY, v_high = -INFINITY;
-  for (const Vec3& p : triangle) {
-    const Vec3 r = p - triangle[0];
-    u_low = std::min(u_low, dot(r, cover.e1_));
-    u_high = std::max(u_high, dot(r, cover.e1_));
-    v_low = std::min(v_low, dot(r, cover.e2_));
-    v_high = std::max(v_high, dot(r, cover.e2_));
-  }
-  const double grow = margin * (1 + 1e-12) + 2 * slack;
-  cover.u0_ = u_low - grow;
-  cover.v0_ = v_low - grow;
+  const Shadow whole = cover.shadow(triangle);
+  const double grow = prism.margin * (1 + 1e-12) + 2 * slack;
+  cover.u0_ = whole.u_low - grow;
+  cover.v0_ = whole.v_low - grow;
   double cell = options.cell;
   const auto count = [&](double extent) {
     return static_cast<std::size_t>(std::floor((extent + 2 * grow) / cell)) + 1;
   };
-  while (count(u_high - u_low) * count(v_high - v_low) > kMaxMapCells) cell *= 2;
+  const double width_u = whole.u_high - whole.u_low, width_v = whole.v_high - whole.v_low;
+  while (count(width_u) * count(width_v) > kMaxMapCells) cell *= 2;
   cover.cell_ = cell;
-  cover.columns_ = count(u_high - u_low);
-  cover.rows_ = count(v_high - v_low);
-  cover.rim_ = shrink * radius * (1 + 1e-12);
+  cover.columns_ = count(width_u);
+  cover.rows_ = count(width_v);
+  cover.rim_ = shrunk.rim;
   cover.highest_.assign(cover.columns_ * cover.rows_, -INFINITY);
   for (std::size_t k = 0; k < flat.size(); ++k) {
-    double lu = INFINITY, hu = -INFINITY, lv = INFINITY, hv = -INFINITY;
-    for (const Vec3& p : reference[flat[k]]) {
-      const Vec3 r = p - triangle[0];
-      lu = std::min(lu, dot(r, cover.e1_));
-      hu = std::max(hu, dot(r, cover.e1_));
-      lv = std::min(lv, dot(r, cover.e2_));
-      hv = std::max(hv, dot(r, cover.e2_));
-    }
-    const auto first = [&](double x, double x0, std::size_t n) {
-      return static_cast<std::size_t>(
-          std::clamp(std::floor((x - slack - x0) / cell), 0.0, static_cast<double>(n - 1)));
-    };
-    if (hu + slack < cover.u0_ || hv + slack < cover.v0_) continue;
-    const std::size_t i0 = first(lu, cover.u0_, cover.columns_);
-    const std::size_t i1 = first(hu + 2 * slack, cover.u0_, cover.columns_);
-    const std::size_t j0 = first(lv, cover.v0_, cover.rows_);
-    const std::size_t j1 = first(hv + 2 * slack, cover.v0_, cover.rows_);
-    for (std::size_t j = j0; j <= j1; ++j) {
-      for (std::size_t i = i0; i <= i1; ++i) {
-        double& h = cover.highest_[j * cover.columns_ + i];
-        h = std::max(h, heights[k]);
-      }
-    }
+    const Shadow s = cover.shadow(reference[flat[k]]);
+    if (s.u_high + slack < cover.u0_ || s.v_high + slack < cover.v0_) continue;
+    cover.raise(s, slack, heights[k]);
   }
   cover.points_ = points_below(triangle, reference, flat, options);
   return cover;
 }
 
-void TriangleCover::bound(Patch& patch) const {
-  const auto& c = patch.corners;
-  if (side_ != 0 && patch.side == 0 &&
-      std::none_of(c.begin(), c.end(),
-                   [&](const PatchCorner& corner) { return side_ * corner.d < side_reached_; })) {
-    patch.side = side_;
-    patch.lower_abs = side_reached_;
+TriangleCover::Shadow TriangleCover::shadow(const TriangleCorners& points) const {
+  Shadow s;
+  for (const Vec3& p : points) {
+    const Vec3 r = p - origin_;
+    s.u_low = std::min(s.u_low, dot(r, e1_));
+    s.u_high = std::max(s.u_high, dot(r, e1_));
+    s.v_low = std::min(s.v_low, dot(r, e2_));
+    s.v_high = std::max(s.v_high, dot(r, e2_));
   }
-  if (highest_.empty()) return;
-  // A point of the patch has, within the rim, a point of the shrunk triangle, straight above
-  // or below which lies a covering triangle whose shadow meets the patch's grown by the rim.
-  double patch_height = 0;
-  double lu = INFINITY, hu = -INFINITY, lv = INFINITY, hv = -INFINITY;
-  for (const PatchCorner& corner : c) {
-    const Vec3 r = corner.point - origin_;
-    patch_height = std::max(patch_height, std::fabs(dot(r, normal_)));
-    lu = std::min(lu, dot(r, e1_));
-    hu = std::max(hu, dot(r, e1_));
-    lv = std::min(lv, dot(r, e2_));
-    hv = std::max(hv, dot(r, e2_));
-  }
-  const double grow = rim_ + 2 * slack_;
+  return s;
+}
+
+TriangleCover::Cells TriangleCover::cells_under(const Shadow& s, double grow) const {
   const auto cell_of = [&](double x, double x0, std::size_t n) {
     return static_cast<std::size_t>(
         std::clamp(std::floor((x - x0) / cell_), 0.0, static_cast<double>(n - 1)));
   };
-  double highest = -INFINITY;
-  for (std::size_t j = cell_of(lv - grow, v0_, rows_); j <= cell_of(hv + grow, v0_, rows_); ++j) {
-    for (std::size_t i = cell_of(lu - grow, u0_, columns_); i <= cell_of(hu + grow, u0_, columns_);
-         ++i) {
-      highest = std::max(highest, highest_[j * columns_ + i]);
+  return {cell_of(s.u_low - grow, u0_, columns_), cell_of(s.u_high + grow, u0_, columns_),
+          cell_of(s.v_low - grow, v0_, rows_), cell_of(s.v_high + grow, v0_, rows_)};
+}
+
+void TriangleCover::raise(const Shadow& s, double grow, double height) {
+  const Cells c = cells_under(s, grow);
+  for (std::size_t j = c.j0; j <= c.j1; ++j) {
+    for (std::size_t i = c.i0; i <= c.i1; ++i) {
+      highest_[j * columns_ + i] = std::max(highest_[j * columns_ + i], height);
     }
+  }
+}
+
+void TriangleCover::bound(Patch& patch) const {
+  if (patch.side == 0) take_side(patch, side_, side_reached_);
+  if (highest_.empty()) return;
+  // A point of the patch has, within the rim, a point of the shrunk triangle, straight above
+  // or below which lies a covering triangle whose shadow meets the patch's grown by the rim.
+  double patch_height = 0;
+  for (const PatchCorner& corner : patch.corners) {
+    patch_height = std::max(patch_height, std::fabs(dot(corner.point - origin_, normal_)));
+  }
+  double highest = -INFINITY;
+  const Cells c = cells_under(shadow(patch.points()), rim_ + 2 * slack_);
+  for (std::size_t j = c.j0; j <= c.j1; ++j) {
+    for (std::size_t i = c.i0; i <= c.i1; ++i)
+      highest = std::max(highest, highest_[j * columns_ + i]);
   }
   // No covering triangle near: the patch lies in the rim only, where the map says nothing.
   if (!(highest >= 0)) return;

@@ -11,6 +11,7 @@
 //    a flat face): the error there is likely beyond what the lattice measured.
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -43,6 +44,19 @@ class TriangleCover {
   const std::vector<Vec3>& points_to_measure() const { return points_; }
 
  private:
+  // A triangle's shadow on the map's plane: its extent along e1 (u) and e2 (v).
+  struct Shadow {
+    double u_low = INFINITY, u_high = -INFINITY, v_low = INFINITY, v_high = -INFINITY;
+  };
+  Shadow shadow(const TriangleCorners& points) const;
+  // The map's cells the shadow, grown by `grow`, meets: columns i0..i1, rows j0..j1.
+  struct Cells {
+    std::size_t i0 = 0, i1 = 0, j0 = 0, j1 = 0;
+  };
+  Cells cells_under(const Shadow& s, double grow) const;
+  // The map's cells under the shadow grown by `grow` hold at least `height`.
+  void raise(const Shadow& s, double grow, double height);
+
   // side * d >= side_reached on the whole triangle when side != 0.
   int side_ = 0;
   double side_reached_ = 0;

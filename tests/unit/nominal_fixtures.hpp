@@ -175,6 +175,15 @@ inline Vec3 random_direction(std::mt19937_64& rng) {
   return normalized(Vec3{normal(rng), normal(rng), normal(rng)});
 }
 
+// The point A + u (B - A) + v (C - A) of triangle ABC, folded back into it when u + v > 1.
+inline Vec3 point_on(const TriangleCorners& t, double u, double v) {
+  if (u + v > 1) {
+    u = 1 - u;
+    v = 1 - v;
+  }
+  return t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]);
+}
+
 // A uniformly random point of triangle t.
 inline Vec3 random_point_on(std::mt19937_64& rng, const Mesh& mesh, std::size_t t) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);

@@ -50,11 +50,18 @@ std::pair<double, double> dense_extremes(const Mesh& workpiece, const IndexedRef
           *std::min_element(d.distance.begin(), d.distance.end())};
 }
 
+// The certified interval holds the exact error at `per_triangle` random points of every
+// triangle of the sampled mesh and at its corners.
+void check_holds_dense_truth(const Certificate& c, const Mesh& sampled,
+                             const IndexedReference& reference, int per_triangle) {
+  const auto [true_max, true_min] = dense_extremes(sampled, reference, per_triangle);
+  CHECK(c.max.bound >= true_max);
+  CHECK(c.min.bound <= true_min);
+}
+
 void check_contains_truth(const Mesh& workpiece, const IndexedReference& nominal, double step) {
   const Certified c = certify(workpiece, nominal, step, CertifyOptions{0.01, 0});
-  const auto [true_max, true_min] = dense_extremes(workpiece, nominal, 400);
-  CHECK(c.certificate.max.bound >= true_max);
-  CHECK(c.certificate.min.bound <= true_min);
+  check_holds_dense_truth(c.certificate, workpiece, nominal, 400);
   CHECK(c.certificate.max.measured >= c.sampled_max);
   CHECK(c.certificate.min.measured <= c.sampled_min);
   CHECK(c.certificate.sign_proven);
@@ -123,9 +130,7 @@ TEST_CASE("a face machined exactly to the nominal beside an uncut slot is certif
     CHECK(c.certificate.max.measured == Approx(0.5).margin(1e-12));
     CHECK(c.certificate.max.width() <= width);
     CHECK(c.certificate.min.bound >= -width);
-    const auto [true_max, true_min] = dense_extremes(workpiece, nominal, 400);
-    CHECK(c.certificate.max.bound >= true_max);
-    CHECK(c.certificate.min.bound <= true_min);
+    check_holds_dense_truth(c.certificate, workpiece, nominal, 400);
   }
   SECTION("from the nominal: its slot lies inside the uncut block, down to its depth") {
     const IndexedReference workpiece = index_reference(uncut.mesh(1.0), "uncut");
@@ -135,9 +140,7 @@ TEST_CASE("a face machined exactly to the nominal beside an uncut slot is certif
     CHECK(c.certificate.min.measured == Approx(-1.0).margin(1e-12));
     CHECK(c.certificate.min.width() <= width);
     CHECK(c.certificate.max.bound <= width);
-    const auto [true_max, true_min] = dense_extremes(nominal, workpiece, 400);
-    CHECK(c.certificate.max.bound >= true_max);
-    CHECK(c.certificate.min.bound <= true_min);
+    check_holds_dense_truth(c.certificate, nominal, workpiece, 400);
   }
 }
 
@@ -155,9 +158,7 @@ TEST_CASE("a coarse face over a finely facetted scallop surface is certified to 
     CHECK(c.certificate.unresolved == 0);
     CHECK(c.certificate.min.width() <= width);
     CHECK(c.certificate.max.width() <= width);
-    const auto [true_max, true_min] = dense_extremes(flat, workpiece, 2000);
-    CHECK(c.certificate.max.bound >= true_max);
-    CHECK(c.certificate.min.bound <= true_min);
+    check_holds_dense_truth(c.certificate, flat, workpiece, 2000);
     // Settled per triangle: few points added, few patches split.
     CAPTURE(c.certificate.added_points, c.certificate.refined_patches, c.certificate.patches);
     CHECK(c.certificate.refined_patches * 100 < c.certificate.patches);
@@ -166,9 +167,7 @@ TEST_CASE("a coarse face over a finely facetted scallop surface is certified to 
     const IndexedReference nominal = index_reference(flat, "flat");
     const Certified c = certify(scalloped, nominal, 0.3, CertifyOptions{width, 0});
     CHECK(c.certificate.unresolved == 0);
-    const auto [true_max, true_min] = dense_extremes(scalloped, nominal, 400);
-    CHECK(c.certificate.max.bound >= true_max);
-    CHECK(c.certificate.min.bound <= true_min);
+    check_holds_dense_truth(c.certificate, scalloped, nominal, 400);
   }
 }
 
@@ -186,9 +185,7 @@ TEST_CASE("walls reaching above a box's edge are bounded across its faces' diago
   CHECK(c.certificate.max.width() <= 0.001);
   CHECK(c.certificate.min.bound >= -0.001);
   CHECK(c.certificate.refined_patches <= 10);
-  const auto [true_max, true_min] = dense_extremes(scalloped, nominal, 400);
-  CHECK(c.certificate.max.bound >= true_max);
-  CHECK(c.certificate.min.bound <= true_min);
+  check_holds_dense_truth(c.certificate, scalloped, nominal, 400);
 }
 
 TEST_CASE("the certificate does not depend on the thread count", "[certify]") {

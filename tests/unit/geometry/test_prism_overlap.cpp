@@ -3,6 +3,7 @@
 #include <random>
 
 #include "geometry/prism_overlap.hpp"
+#include "nominal_fixtures.hpp"
 
 namespace ncv {
 namespace {
@@ -14,14 +15,6 @@ const Prism kPrism{{Vec3(0, 0, 0), Vec3(4, 0, 0), Vec3(0, 4, 0)}, Vec3(0, 0, 1),
 // base (a right triangle in z = 0 here).
 bool in_prism(Vec3 p) {
   return p[2] >= 1 && p[2] <= 3 && p[0] >= 0 && p[1] >= 0 && p[0] + p[1] <= 4;
-}
-
-Vec3 on_triangle(const TriangleCorners& t, double u, double v) {
-  if (u + v > 1) {
-    u = 1 - u;
-    v = 1 - v;
-  }
-  return t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]);
 }
 
 }  // namespace
@@ -55,7 +48,7 @@ TEST_CASE("a triangle said not to meet a prism has no dense point inside it", "[
     bool inside = false;
     for (int i = 0; i <= 60 && !inside; ++i) {
       for (int j = 0; i + j <= 60 && !inside; ++j)
-        inside = in_prism(on_triangle(t, i / 60.0, j / 60.0));
+        inside = in_prism(fixtures::point_on(t, i / 60.0, j / 60.0));
     }
     const bool meets = triangle_meets_prism(t, kPrism, 1e-9);
     if (!meets) CHECK_FALSE(inside);

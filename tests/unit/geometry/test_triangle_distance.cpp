@@ -8,21 +8,13 @@
 namespace ncv {
 namespace {
 
-Vec3 on_triangle(const TriangleCorners& t, double u, double v) {
-  if (u + v > 1) {
-    u = 1 - u;
-    v = 1 - v;
-  }
-  return t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]);
-}
-
 // The least distance between two triangles over a dense grid of points on the first, each
 // measured exactly to the second: an upper estimate of their distance.
 double sampled_distance(const TriangleCorners& a, const TriangleCorners& b, int steps) {
   double least = std::numeric_limits<double>::infinity();
   for (int i = 0; i <= steps; ++i) {
     for (int j = 0; i + j <= steps; ++j) {
-      const Vec3 p = on_triangle(a, double(i) / steps, double(j) / steps);
+      const Vec3 p = fixtures::point_on(a, double(i) / steps, double(j) / steps);
       least = std::min(least, std::sqrt(closest_point_on_triangle(p, b).squared_distance));
     }
   }
