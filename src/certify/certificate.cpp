@@ -1,5 +1,7 @@
 #include "certify/certificate.hpp"
 
+#include "geometry/point_json.hpp"
+
 namespace ncv {
 namespace {
 
@@ -32,6 +34,13 @@ void keep_smaller(CertifiedExtreme& into, const CertifiedExtreme& other) {
 }
 
 }  // namespace
+
+nlohmann::json certified_extreme_json(const CertifiedExtreme& e) {
+  return {{"measured", e.measured},
+          {"measured_at", point_json(e.measured_at)},
+          {"bound", e.bound},
+          {"bound_at", point_json(e.bound_at)}};
+}
 
 Certificate negated(const Certificate& c) {
   Certificate n = c;

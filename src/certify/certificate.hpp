@@ -9,6 +9,8 @@
 #include <optional>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "geometry/vec3.hpp"
 
 namespace ncv {
@@ -40,6 +42,9 @@ struct Certificate {
   std::uint64_t first_anchor = 0;
   std::uint64_t end_anchor = 0;
 };
+
+// An extreme's four fields as the distance file and the report both write them.
+nlohmann::json certified_extreme_json(const CertifiedExtreme& extreme);
 
 // The certificate of the other direction's convention: reverse distances are the negated
 // signed distances to the workpiece, so max and min swap and change sign.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "geometry/point_json.hpp"
 #include "util/input_bytes.hpp"
 
 namespace ncv {
@@ -39,10 +40,6 @@ std::string string_field(const Container& c, const std::string& pointer) {
   return value.get<std::string>();
 }
 
-nlohmann::json point_json(Vec3 p) {
-  return {p[0], p[1], p[2]};
-}
-
 Vec3 point_from(const Container& c, const nlohmann::json& value) {
   if (!value.is_array() || value.size() != 3) c.fail("a certificate point is malformed");
   Vec3 p(0, 0, 0);
@@ -51,13 +48,6 @@ Vec3 point_from(const Container& c, const nlohmann::json& value) {
     p[axis] = value[axis].get<double>();
   }
   return p;
-}
-
-nlohmann::json extreme_json(const CertifiedExtreme& e) {
-  return {{"measured", e.measured},
-          {"measured_at", point_json(e.measured_at)},
-          {"bound", e.bound},
-          {"bound_at", point_json(e.bound_at)}};
 }
 
 double number_from(const Container& c, const nlohmann::json& object, const char* key) {
@@ -77,11 +67,16 @@ CertifiedExtreme extreme_from(const Container& c, const nlohmann::json& object) 
 }
 
 nlohmann::json certificate_json(const Certificate& c) {
-  return {{"width_asked", c.width_asked},   {"points_cap", c.points_cap},
-          {"max", extreme_json(c.max)},     {"min", extreme_json(c.min)},
-          {"patches", c.patches},           {"refined_patches", c.refined_patches},
-          {"added_points", c.added_points}, {"unresolved", c.unresolved},
-          {"sign_proven", c.sign_proven},   {"first_anchor", c.first_anchor},
+  return {{"width_asked", c.width_asked},
+          {"points_cap", c.points_cap},
+          {"max", certified_extreme_json(c.max)},
+          {"min", certified_extreme_json(c.min)},
+          {"patches", c.patches},
+          {"refined_patches", c.refined_patches},
+          {"added_points", c.added_points},
+          {"unresolved", c.unresolved},
+          {"sign_proven", c.sign_proven},
+          {"first_anchor", c.first_anchor},
           {"end_anchor", c.end_anchor}};
 }
 

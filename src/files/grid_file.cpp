@@ -1,6 +1,7 @@
 #include "files/grid_file.hpp"
 
 #include "files/mesh_arrays.hpp"
+#include "geometry/point_json.hpp"
 
 namespace ncv {
 namespace {
@@ -23,10 +24,6 @@ nlohmann::json topology_meta(const TopologyReport& t) {
 // The loops a grid file lists (all are counted): enough to find every hole of a nominal
 // that has a few, a bounded header for a triangle soup with one per triangle.
 constexpr std::size_t kListedLoops = 100;
-
-nlohmann::json point_json(Vec3 p) {
-  return {p[0], p[1], p[2]};
-}
 
 nlohmann::json boundary_loops_meta(const ReferenceSurface& s) {
   nlohmann::json listed = nlohmann::json::array();

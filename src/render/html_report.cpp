@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "geometry/point_json.hpp"
 #include "render/report_assets.hpp"
 #include "render/svg_histogram.hpp"
 #include "render/svg_legend.hpp"
@@ -103,10 +104,6 @@ std::string mesh_bytes(const ErrorMesh& m, const ColorMap& map, Vec3 center) {
 
 std::string kind_name(RegionKind kind) {
   return kind == RegionKind::excess ? "excess" : "gouge";
-}
-
-nlohmann::json point_json(Vec3 p) {
-  return {p[0], p[1], p[2]};
 }
 
 // JSON inside a <script> element: "</" would end the element early.

@@ -6,14 +6,11 @@
 
 #include <tbb/parallel_invoke.h>
 
+#include "geometry/point_json.hpp"
 #include "util/error.hpp"
 
 namespace ncv {
 namespace {
-
-nlohmann::json point_json(Vec3 p) {
-  return {p[0], p[1], p[2]};
-}
 
 nlohmann::json extreme_json(const SampleExtreme& e) {
   return {{"value", e.value}, {"sample", e.sample}, {"position", point_json(e.position)}};
@@ -66,13 +63,6 @@ nlohmann::json tolerance_json(const PartReport& r) {
       {"share_gouge", s.share(t.gouge)},
       {"verdict", name_of(kVerdictNames, *r.verdict())},
       {"reason", verdict_reason(s, r.distances->certificate, t.tolerance, report_number_style(r))}};
-}
-
-nlohmann::json certified_extreme_json(const CertifiedExtreme& e) {
-  return {{"measured", e.measured},
-          {"measured_at", point_json(e.measured_at)},
-          {"bound", e.bound},
-          {"bound_at", point_json(e.bound_at)}};
 }
 
 nlohmann::json certificate_json(const Certificate& c) {
