@@ -150,7 +150,7 @@ bool NearbyTriangles::for_each(const BoundingBox& box, double reach, std::uint64
   const BackgroundGrid& grid = index_.grid();
   std::array<std::int64_t, 3> lo{}, hi{};
   std::uint64_t cells = 1;
-  const std::span<const TriangleCorners> reference = index_.triangles();
+  const std::span<const BoxBlock> boxes = index_.boxes();
   for (int axis = 0; axis < 3; ++axis) {
     const double low = box.min[axis], high = box.max[axis];
     const double last = static_cast<double>(grid.dims[axis]) - 1;
@@ -178,8 +178,13 @@ bool NearbyTriangles::for_each(const BoundingBox& box, double reach, std::uint64
           const std::uint32_t t = grid.cell_triangles[e];
           if (stamps_[t] == epoch_) continue;
           stamps_[t] = epoch_;
+          // The search's own box of this reference (float, rounded outward: it holds the
+          // triangle, so its gap is never more than the triangle's).
+          const BoxBlock& block = boxes[e / kBoxLanes];
+          const std::size_t lane = e % kBoxLanes;
           BoundingBox triangle_box;
-          for (const Vec3& p : reference[t]) triangle_box.extend(p);
+          triangle_box.min = Vec3(block.lo[0][lane], block.lo[1][lane], block.lo[2][lane]);
+          triangle_box.max = Vec3(block.hi[0][lane], block.hi[1][lane], block.hi[2][lane]);
           if (box_gap(box, triangle_box) > reach) continue;
           visit(t);
         }
