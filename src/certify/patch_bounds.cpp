@@ -166,10 +166,14 @@ void bound_from_corners(Patch& patch, std::span<const TriangleCorners> reference
   patch.upper_abs = convex_upper_abs(patch, reference) + slack;
   patch.side = 0;
   patch.lower_abs = 0;
+  patch.high = std::numeric_limits<double>::infinity();
+  patch.low = -patch.high;
   if (!side_is_continuous) return;
+  const double h = covering_radius(c[0].point, c[1].point, c[2].point) * (1 + 1e-12) + slack;
+  patch.high = std::max({c[0].d, c[1].d, c[2].d}) + h;
+  patch.low = std::min({c[0].d, c[1].d, c[2].d}) - h;
   const int side = common_side(patch);
   if (side == 0) return;
-  const double h = covering_radius(c[0].point, c[1].point, c[2].point) * (1 + 1e-12) + slack;
   const double least = std::min({std::fabs(c[0].d), std::fabs(c[1].d), std::fabs(c[2].d)});
   if (least > h) {
     patch.side = side;

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -43,9 +44,13 @@ struct Patch {
   double upper_abs = 0;
   double lower_abs = 0;
   int side = 0;
+  // Proven where the sign is the true side (1-Lipschitz d): low <= d <= high on the patch,
+  // from the corners' values and the covering radius; unbounded otherwise.
+  double high = std::numeric_limits<double>::infinity();
+  double low = -std::numeric_limits<double>::infinity();
 
-  double upper() const { return side < 0 ? -lower_abs : upper_abs; }
-  double lower() const { return side > 0 ? lower_abs : -upper_abs; }
+  double upper() const { return std::min(side < 0 ? -lower_abs : upper_abs, high); }
+  double lower() const { return std::max(side > 0 ? lower_abs : -upper_abs, low); }
   Vec3 centre() const { return (corners[0].point + corners[1].point + corners[2].point) / 3.0; }
   TriangleCorners points() const { return {corners[0].point, corners[1].point, corners[2].point}; }
 };
