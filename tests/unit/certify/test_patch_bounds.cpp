@@ -37,4 +37,42 @@ TEST_CASE("the equilateral triangle's covering radius is its circumradius", "[pa
   CHECK(covering_radius(a, b, Vec3(0.5, 0.1, 0)) == Approx(0.5));  // obtuse: half the base
 }
 
+TEST_CASE("a triangle's covering radius is at most its longest edge over sqrt(3)",
+          "[patch_bounds]") {
+  // The lattice pass screens triangles with that bound before the covering radius.
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng)), c(u(rng), u(rng), u(rng));
+    const double longest =
+        std::sqrt(std::max({squared_norm(b - a), squared_norm(c - b), squared_norm(a - c)}));
+    CHECK(covering_radius(a, b, c) <= longest / std::sqrt(3.0) * (1 + 1e-12));
+  }
+}
+
+TEST_CASE("a patch rising from a contact keeps its lower bound near the contact",
+          "[patch_bounds]") {
+  // The reference: a large face in z = 0, outside above it, so d(p) = p.z over the patch.
+  const std::vector<TriangleCorners> reference = {
+      {Vec3(-10, -10, 0), Vec3(10, -10, 0), Vec3(0, 10, 0)}};
+  Patch patch;
+  patch.corners = {PatchCorner{Vec3(0, 0, 0), 0.0, 0}, PatchCorner{Vec3(0.2, 0, 1), 1.0, 0},
+                   PatchCorner{Vec3(0, 0.2, 0.5), 0.5, 0}};
+  const double slack = 1e-9;
+  const double h =
+      covering_radius(patch.corners[0].point, patch.corners[1].point, patch.corners[2].point);
+  bound_from_corners(patch, reference, slack, true);
+  // |d| alone would give -1: the corners' values within h give -h.
+  CHECK(patch.upper_abs >= 1.0);
+  CHECK(patch.lower() >= -h - 2 * slack);
+  CHECK(patch.lower() < -h + 2 * slack);
+  CHECK(patch.upper() <= 1.0 + h + 2 * slack);
+  // The truth lies inside: d = z from 0 to 1 over the patch.
+  CHECK(patch.lower() <= 0.0);
+  CHECK(patch.upper() >= 1.0);
+  // Without a continuous side no interval on d is known: only |d|.
+  bound_from_corners(patch, reference, slack, false);
+  CHECK(patch.lower() == -patch.upper_abs);
+}
+
 }  // namespace ncv
