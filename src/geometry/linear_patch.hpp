@@ -13,11 +13,14 @@ struct LinearPatch {
   double lo = 0, mid = 0, hi = 0;  // the three corner values, ascending
 };
 
+// The three compare-and-swap steps (a, b), (b, c), (a, b) of a sorting network, each as
+// std::min and std::max, which pick exactly what `if (x > y) swap(x, y)` leaves (signed
+// zeros included) without a branch: the corner values of neighbouring patches come in any
+// order, and the branches mispredicted about once a patch.
 constexpr LinearPatch make_linear_patch(double area, double a, double b, double c) {
-  if (a > b) std::swap(a, b);
-  if (b > c) std::swap(b, c);
-  if (a > b) std::swap(a, b);
-  return {area, a, b, c};
+  const double a1 = std::min(a, b), b1 = std::max(b, a);
+  const double b2 = std::min(b1, c), c2 = std::max(c, b1);
+  return {area, std::min(a1, b2), std::max(b2, a1), c2};
 }
 
 // Integral of the field: area times the mean of the corners (paper eq. 8).

@@ -53,9 +53,11 @@ std::vector<double> area_at_most_each(std::span<const LinearPatch> patches,
             part[m + last] += p.area;
             continue;
           }
-          const std::size_t first = lower_bound_index(splits, p.lo);
-          const std::size_t whole = lower_bound_index(splits, p.hi);
-          for (std::size_t s = first; s < whole; ++s) part[s] += area_at_most(p, splits[s]);
+          // The splits in [lo, hi), walked rather than searched: a patch spans few.
+          std::size_t whole = lower_bound_index(splits, p.lo);
+          for (; whole < m && splits[whole] < p.hi; ++whole) {
+            part[whole] += area_at_most(p, splits[whole]);
+          }
           part[m + whole] += p.area;
           last = whole;
           low = whole > 0 ? splits[whole - 1] : -std::numeric_limits<double>::infinity();
