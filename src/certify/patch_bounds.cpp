@@ -417,6 +417,32 @@ int free_prism_side(std::span<const TriangleCorners> reference, std::span<const 
 
 namespace {
 
+// The directions a contact prism may rise in: the patch's normal; for a patch of zero area
+// (its corners on a line: a sliver a CAD export left), two directions across the line, as
+// the proof below holds for a prism over any plane through the patch, and one of them may
+// lie in a face the line runs along. None for a patch that is a point.
+std::vector<Vec3> prism_normals(const Patch& patch) {
+  const auto& c = patch.corners;
+  const Vec3 normal = normalized(cross(c[1].point - c[0].point, c[2].point - c[0].point));
+  if (normal != Vec3(0, 0, 0)) return {normal};
+  Vec3 along(0, 0, 0);
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 edge = c[(k + 1) % 3].point - c[k].point;
+    if (squared_norm(edge) > squared_norm(along)) along = edge;
+  }
+  along = normalized(along);
+  if (along == Vec3(0, 0, 0)) return {};
+  // Across the line: from the coordinate axis least along it.
+  int axis = 0;
+  for (int k = 1; k < 3; ++k) {
+    if (std::fabs(along[k]) < std::fabs(along[axis])) axis = k;
+  }
+  Vec3 unit(0, 0, 0);
+  unit[axis] = 1;
+  const Vec3 first = normalized(cross(along, unit));
+  return {first, normalized(cross(along, first))};
+}
+
 // The side proof where the patch touches the reference from one side (docs/CERTIFICATION.md
 // "Contact"): a face machined exactly to the nominal, the line where it meets a face left
 // higher. Over the patch shrunk by `margin`, a prism from height `low` to `high` on one side
@@ -427,21 +453,24 @@ namespace {
 // -(low + margin) on the patch.
 void prove_side_by_prism(Patch& patch, NearbyTriangles& nearby, const SideWitness& witness,
                          double width, double slack) {
-  const auto& c = patch.corners;
-  const Vec3 normal = normalized(cross(c[1].point - c[0].point, c[2].point - c[0].point));
   const ContactPrism prism = contact_prism(width, slack);
   const ShrunkTriangle shrunk = shrink_towards_centre(patch.points(), prism.margin);
-  if (normal == Vec3(0, 0, 0) || !(shrunk.radius > prism.margin)) return;
+  const std::vector<Vec3> normals = prism_normals(patch);
+  if (normals.empty() || !(shrunk.radius > prism.margin)) return;
   std::vector<std::uint32_t> near;
   if (!nearby.for_each(patch, prism.high + 2 * slack, kMaxNearbyCells,
                        [&](std::uint32_t t) { near.push_back(t); }) ||
       near.size() > kMaxPrismTriangles) {
     return;
   }
-  take_side(patch,
-            free_prism_side(nearby.triangles(), near, shrunk.corners, normal, prism.low, prism.high,
-                            witness, slack),
-            prism.reached);
+  for (const Vec3& normal : normals) {
+    const int side = free_prism_side(nearby.triangles(), near, shrunk.corners, normal, prism.low,
+                                     prism.high, witness, slack);
+    if (side != 0) {
+      take_side(patch, side, prism.reached);
+      return;
+    }
+  }
 }
 
 }  // namespace

@@ -144,6 +144,27 @@ TEST_CASE("a face machined exactly to the nominal beside an uncut slot is certif
   }
 }
 
+TEST_CASE("a zero-area triangle along a contact line is certified to the width", "[certify]") {
+  // The block's own surface (the error is 0 on it) with a sliver of zero area along a
+  // vertical edge and 2 above the block, as a CAD export leaves them beside a rib the block
+  // lacks: a patch with no normal, touching the block, whose side only a prism across its line
+  // proves; splitting it would need patches as short as the width.
+  const Mesh block = fixtures::box({0, 0, 0}, {6, 4, 3});
+  const IndexedReference reference = index_reference(block, "block");
+  Mesh sampled = block;
+  const auto first = static_cast<std::uint32_t>(sampled.vertices.size());
+  for (const double z : {0.0, 3.0, 5.0}) sampled.vertices.push_back(Vec3(0, 0, z));
+  sampled.triangles.push_back({first, first + 1, first + 2});
+  const double width = 0.001;
+  const Certified c = certify(sampled, reference, 0.3, CertifyOptions{width, 0});
+  CHECK(c.certificate.unresolved == 0);
+  CHECK(c.certificate.added_points < 100);
+  CHECK(c.certificate.max.measured == Approx(2.0).margin(1e-12));
+  CHECK(c.certificate.max.width() <= width);
+  CHECK(c.certificate.min.bound >= -width);
+  check_holds_dense_truth(c.certificate, sampled, reference, 100);
+}
+
 TEST_CASE("a coarse face over a finely facetted scallop surface is certified to the width",
           "[certify]") {
   // Twenty scallops 1 wide, cut by a ball of radius 3 (cusps 0.042 high), each arc in 8
