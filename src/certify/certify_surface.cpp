@@ -26,6 +26,11 @@ constexpr std::size_t kTriangleBlock = 1024;
 // Open patches a sampled triangle must have before they are bounded once for all of them
 // (TriangleCover): fewer cost less one by one.
 constexpr std::size_t kLeastPatchesPerCover = 8;
+// Open patches (by the cheap bounds) a sampled triangle must have for its patches to be made
+// with its TriangleCover at hand, and kept only if that leaves them open: a coarse triangle
+// over a finer reference would otherwise hold all its patches open at once (the bundled
+// box_scallop's nominal: 2.1 M patches, 0.96 GB).
+constexpr std::uint64_t kLeastPatchesDeferred = 256;
 // Search grid cells the triangle's gathering may visit: a few per open patch, so that its
 // cost stays that of the patches it bounds.
 constexpr std::uint64_t kCoverCellsPerPatch = 64;
@@ -123,9 +128,8 @@ class Certifier {
     measure_missing_corners();
     measured_ = held_extremes();
     for (const auto& [sample, corner] : extra_) measured_.add(corner.d, global(corner.point));
-    std::vector<Patch> open = bound_lattice();
-    open = bound_by_triangle(std::move(open));
-    refine(std::move(open));
+    LatticePass lattice = bound_lattice();
+    refine(bound_by_triangle(std::move(lattice.open), lattice.deferred));
     return certificate();
   }
 
@@ -215,9 +219,15 @@ class Certifier {
         [](Extremes& into, const Extremes& part) { into.add(part); });
   }
 
+  // A triangle whose patches are made with its cover, and how many the cheap bounds left open.
+  struct Deferred {
+    std::uint32_t triangle = 0;
+    std::uint64_t open = 0;
+  };
   struct LatticePass {
     BoundFold fold;
     std::vector<Patch> open;
+    std::vector<Deferred> deferred;
   };
 
   // A sample's signed distance and closest face, wherever it is held.
@@ -237,19 +247,23 @@ class Certifier {
   // the corners' values, where the sign is the true side.
   // A patch these leave open is bounded again with the convexity bound over the corners'
   // closest triangles (bound_from_corners).
-  void bound_cheaply(std::uint64_t a, std::uint64_t b, std::uint64_t c, double cover, double& upper,
-                     double& lower) const {
+  struct CheapBounds {
+    double upper_abs = 0, upper = 0, lower = 0;
+  };
+  CheapBounds bound_cheaply(std::uint64_t a, std::uint64_t b, std::uint64_t c, double cover) const {
     const auto [da, fa] = value(a);
     const auto [db, fb] = value(b);
     const auto [dc, fc] = value(c);
     const double largest = std::max({std::fabs(da), std::fabs(db), std::fabs(dc)});
-    const double upper_abs = (fa == fb && fb == fc ? largest : largest + cover) + slack_;
-    upper = upper_abs;
-    lower = -upper_abs;
+    CheapBounds bounds;
+    bounds.upper_abs = (fa == fb && fb == fc ? largest : largest + cover) + slack_;
+    bounds.upper = bounds.upper_abs;
+    bounds.lower = -bounds.upper_abs;
     if (continuous_) {
-      upper = std::min(upper, std::max({da, db, dc}) + cover);
-      lower = std::max(lower, std::min({da, db, dc}) - cover);
+      bounds.upper = std::min(bounds.upper, std::max({da, db, dc}) + cover);
+      bounds.lower = std::max(bounds.lower, std::min({da, db, dc}) - cover);
     }
+    return bounds;
   }
 
   Vec3 global_centre(std::uint64_t a, std::uint64_t b, std::uint64_t c) const {
@@ -301,10 +315,62 @@ class Certifier {
     }
   }
 
+  // A lattice patch bounded from its corners (and by its triangle's cover when it has one, which
+  // is tried first, as it settles most of its triangle's patches): folded when that settles it,
+  // else returned.
+  std::optional<Patch> bound_patch(std::uint32_t t, std::uint64_t a, std::uint64_t b,
+                                   std::uint64_t c, double radius, BoundFold& fold,
+                                   const TriangleCover* cover = nullptr) const {
+    ++fold.patches;
+    const CheapBounds cheap = bound_cheaply(a, b, c, radius);
+    if (!is_open(cheap.upper, cheap.lower)) {
+      // Where only rarely a new extreme: its place is worked out then.
+      if (cheap.upper > fold.bounds.max || cheap.lower < fold.bounds.min) {
+        const Vec3 centre = global_centre(a, b, c);
+        fold.bounds.add(cheap.upper, centre, cheap.lower, centre);
+      }
+      return std::nullopt;
+    }
+    Patch patch;
+    patch.corners = {corner(a), corner(b), corner(c)};
+    patch.triangle = t;
+    patch.upper_abs = cheap.upper_abs;
+    patch.high = cheap.upper;
+    patch.low = cheap.lower;
+    if (cover) cover->bound(patch);
+    if (is_open(patch)) {
+      bound_from_corners(patch, index_.triangles(), slack_, continuous_);
+      patch.upper_abs = std::min(patch.upper_abs, cheap.upper_abs);
+      if (cover) cover->bound(patch);
+    }
+    if (is_open(patch)) return patch;
+    fold.add(patch, false, surface_.origin());
+    return std::nullopt;
+  }
+
+  // How many of a triangle's patches the cheap bounds leave open.
+  std::uint64_t cheaply_open(std::uint32_t t, double cover) const {
+    std::uint64_t count = 0;
+    for_each_lattice_triangle(samples_, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+      const CheapBounds cheap = bound_cheaply(a, b, c, cover);
+      count += is_open(cheap.upper, cheap.lower) ? 1 : 0;
+    });
+    return count;
+  }
+
+  // The covering radius of a triangle's lattice patches (similar to it, scaled by 1/(n-1)),
+  // with the rounding slack.
+  double lattice_cover(std::uint32_t t) const {
+    const Mesh& mesh = samples_.mesh;
+    const double steps = samples_.lattice_sizes[t] - 1;
+    return covering_radius(mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2)) / steps *
+               (1 + 1e-12) +
+           slack_;
+  }
+
   // Every lattice sub-triangle of the covered triangles bounded from its corners; the open
-  // ones are returned, in lattice order.
-  std::vector<Patch> bound_lattice() {
-    const auto reference = index_.triangles();
+  // ones are returned, in lattice order, and the triangles with many left for their covers.
+  LatticePass bound_lattice() {
     const Mesh& mesh = samples_.mesh;
     LatticePass pass = ordered_reduce(
         covered_.size(), kTriangleBlock, LatticePass{},
@@ -337,27 +403,17 @@ class Certifier {
                   t, high, low, [&] { return cover; }, part.fold);
               continue;
             }
+            if (lattice_triangle_count(samples_.lattice_sizes[t]) >= kLeastPatchesDeferred) {
+              const std::uint64_t open = cheaply_open(t, cover);
+              if (open >= kLeastPatchesDeferred) {
+                part.deferred.push_back({t, open});
+                continue;
+              }
+            }
             for_each_lattice_triangle(
                 samples_, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
-                  ++part.fold.patches;
-                  double upper = 0, lower = 0;
-                  bound_cheaply(a, b, c, cover, upper, lower);
-                  if (!is_open(upper, lower)) {
-                    // Where only rarely a new extreme: its place is worked out then.
-                    if (upper > part.fold.bounds.max || lower < part.fold.bounds.min) {
-                      const Vec3 centre = global_centre(a, b, c);
-                      part.fold.bounds.add(upper, centre, lower, centre);
-                    }
-                    return;
-                  }
-                  Patch patch;
-                  patch.corners = {corner(a), corner(b), corner(c)};
-                  patch.triangle = t;
-                  bound_from_corners(patch, reference, slack_, continuous_);
-                  if (is_open(patch)) {
-                    part.open.push_back(patch);
-                  } else {
-                    part.fold.add(patch, false, surface_.origin());
+                  if (std::optional<Patch> patch = bound_patch(t, a, b, c, cover, part.fold)) {
+                    part.open.push_back(*patch);
                   }
                 });
           }
@@ -366,9 +422,11 @@ class Certifier {
         [](LatticePass& into, const LatticePass& part) {
           into.fold.add(part.fold);
           into.open.insert(into.open.end(), part.open.begin(), part.open.end());
+          into.deferred.insert(into.deferred.end(), part.deferred.begin(), part.deferred.end());
         });
     fold_ = pass.fold;
-    return std::move(pass.open);
+    pass.fold = BoundFold{};
+    return pass;
   }
 
   // The normal a point of the sampled triangle is measured with (the paper's sign only).
@@ -376,10 +434,70 @@ class Certifier {
     return vertex_normals_.empty() ? Vec3(0, 0, 0) : normalized(area_vector(samples_.mesh, t));
   }
 
+  // The cover of sampled triangle t for patches whose largest |d| at a corner is `largest`,
+  // `open` of them to bound; nullopt when its surroundings are too large to gather.
+  std::optional<TriangleCover> cover_of(std::uint32_t t, double largest, std::uint64_t open,
+                                        std::uint64_t max_points) {
+    const Mesh& mesh = samples_.mesh;
+    const TriangleCorners corners = {surface_.to_local(mesh.corner(t, 0)),
+                                     surface_.to_local(mesh.corner(t, 1)),
+                                     surface_.to_local(mesh.corner(t, 2))};
+    double longest = 0;
+    for (int k = 0; k < 3; ++k)
+      longest = std::max(longest, norm(corners[(k + 1) % 3] - corners[k]));
+    TriangleCoverOptions options;
+    options.cutoff = 2 * largest + width_;
+    options.width = width_;
+    options.cell = longest / (samples_.lattice_sizes[t] - 1);
+    options.beyond = largest;
+    options.max_points = max_points;
+    options.max_cells = kMaxNearbyCellsPerTriangle + kCoverCellsPerPatch * open;
+    options.side_is_continuous = continuous_;
+    options.slack = slack_;
+    return TriangleCover::build(corners, nearby_.local(), probes_.local().witness(), options);
+  }
+
+  // What a triangle's cover gave: the points it asks to measure, and for a deferred
+  // triangle its patches' fold and those still open.
+  struct Covered {
+    std::vector<PatchCorner> measured;
+    BoundFold fold;
+    std::vector<Patch> open;
+  };
+
+  // The points a cover asks to measure, measured.
+  std::vector<PatchCorner> measure_for(const TriangleCover& cover, std::uint32_t t) {
+    std::vector<PatchCorner> measured;
+    PointProbe& probe = probes_.local();
+    for (const Vec3& p : cover.points_to_measure())
+      measured.push_back(probe.measure(p, normal_of(t)));
+    return measured;
+  }
+
+  // A deferred triangle's patches, each bounded from its corners and then by the triangle's
+  // cover; those still open kept, in lattice order.
+  Covered bound_deferred(const Deferred& deferred, std::uint64_t max_points) {
+    const std::uint32_t t = deferred.triangle;
+    const auto [high, low] = sample_extremes(t);
+    const std::optional<TriangleCover> cover =
+        cover_of(t, std::max(std::fabs(high), std::fabs(low)), deferred.open, max_points);
+    const double radius = lattice_cover(t);
+    Covered out;
+    for_each_lattice_triangle(samples_, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+      if (std::optional<Patch> patch =
+              bound_patch(t, a, b, c, radius, out.fold, cover ? &*cover : nullptr)) {
+        out.open.push_back(*patch);
+      }
+    });
+    if (cover) out.measured = measure_for(*cover, t);
+    return out;
+  }
+
   // The open patches of a triangle with many: bounded by what the whole triangle proves
-  // (TriangleCover) before each is bounded by its own nearby triangles; the still open ones
-  // are returned, in order.
-  std::vector<Patch> bound_by_triangle(std::vector<Patch> open) {
+  // (TriangleCover) before each is bounded by its own nearby triangles, and the deferred
+  // triangles' patches made with their covers; the still open ones are returned, in order.
+  std::vector<Patch> bound_by_triangle(std::vector<Patch> open,
+                                       const std::vector<Deferred>& deferred) {
     std::vector<std::pair<std::size_t, std::size_t>> runs;
     for (std::size_t i = 0; i < open.size();) {
       std::size_t j = i;
@@ -390,45 +508,32 @@ class Certifier {
       if (hard >= kLeastPatchesPerCover) runs.emplace_back(i, j);
       i = j;
     }
-    const Mesh& mesh = samples_.mesh;
-    std::vector<std::vector<PatchCorner>> measured(runs.size());
-    const std::uint64_t points_per_run = runs.empty() ? 0 : (cap_ - added_) / runs.size();
-    tbb::parallel_for(std::size_t{0}, runs.size(), [&](std::size_t r) {
+    const std::size_t covers = runs.size() + deferred.size();
+    const std::uint64_t points_per_cover = covers == 0 ? 0 : (cap_ - added_) / covers;
+    std::vector<Covered> covered(covers);
+    tbb::parallel_for(std::size_t{0}, covers, [&](std::size_t r) {
+      if (r >= runs.size()) {
+        covered[r] = bound_deferred(deferred[r - runs.size()], points_per_cover);
+        return;
+      }
       const auto [begin, end] = runs[r];
       const std::uint32_t t = open[begin].triangle;
       double largest = 0;
       for (std::size_t k = begin; k < end; ++k) {
         for (const PatchCorner& c : open[k].corners) largest = std::max(largest, std::fabs(c.d));
       }
-      const TriangleCorners corners = {surface_.to_local(mesh.corner(t, 0)),
-                                       surface_.to_local(mesh.corner(t, 1)),
-                                       surface_.to_local(mesh.corner(t, 2))};
-      double longest = 0;
-      for (int k = 0; k < 3; ++k)
-        longest = std::max(longest, norm(corners[(k + 1) % 3] - corners[k]));
-      TriangleCoverOptions options;
-      options.cutoff = 2 * largest + width_;
-      options.width = width_;
-      options.cell = longest / (samples_.lattice_sizes[t] - 1);
-      options.beyond = largest;
-      options.max_points = points_per_run;
-      options.max_cells = kMaxNearbyCellsPerTriangle + kCoverCellsPerPatch * (end - begin);
-      options.side_is_continuous = continuous_;
-      options.slack = slack_;
-      PointProbe& probe = probes_.local();
-      const SideWitness witness = probe.witness();
       const std::optional<TriangleCover> cover =
-          TriangleCover::build(corners, nearby_.local(), witness, options);
+          cover_of(t, largest, end - begin, points_per_cover);
       if (!cover) return;
       for (std::size_t k = begin; k < end; ++k) cover->bound(open[k]);
-      for (const Vec3& p : cover->points_to_measure()) {
-        measured[r].push_back(probe.measure(p, normal_of(t)));
-      }
+      covered[r].measured = measure_for(*cover, t);
     });
     // The points measured, in order: the extremes they reach widen the targets.
-    for (const std::vector<PatchCorner>& points : measured) {
-      for (const PatchCorner& c : points) measured_.add(c.d, global(c.point));
-      added_ += points.size();
+    for (Covered& c : covered) {
+      for (const PatchCorner& m : c.measured) measured_.add(m.d, global(m.point));
+      added_ += c.measured.size();
+      fold_.add(c.fold);
+      open.insert(open.end(), c.open.begin(), c.open.end());
     }
     std::vector<Patch> still;
     for (const Patch& p : open) {
@@ -442,8 +547,8 @@ class Certifier {
   }
 
   // A patch open only because its Lipschitz bounds reach past the targets, which they would
-  // not once it is split a level or two (its covering radius within four times the margin
-  // between its corners and the target it misses), is split before it is bounded by its
+  // not once it is split a level (its covering radius within twice the margin between its
+  // corners and the target it misses), is split before it is bounded by its
   // nearby triangles: three points measured cost a microsecond, the nearby proofs 10-30.
   bool splits_first(const Patch& p) const {
     if (!continuous_ || p.near_checked) return false;
