@@ -547,8 +547,8 @@ class Certifier {
   }
 
   // A patch open only because its Lipschitz bounds reach past the targets, which they would
-  // not once it is split a level (its covering radius within twice the margin between its
-  // corners and the target it misses), is split before it is bounded by its
+  // not once it is split a level or two (its covering radius within four times the margin
+  // between its corners and the target it misses), is split before it is bounded by its
   // nearby triangles: three points measured cost a microsecond, the nearby proofs 10-30.
   bool splits_first(const Patch& p) const {
     if (!continuous_ || p.near_checked) return false;
@@ -558,7 +558,7 @@ class Certifier {
     double margin = kInfinity;
     if (p.upper() > upper) margin = upper - std::max({c[0].d, c[1].d, c[2].d});
     if (p.lower() < lower) margin = std::min(margin, std::min({c[0].d, c[1].d, c[2].d}) - lower);
-    return margin > 0 && h <= 2 * margin;
+    return margin > 0 && h <= 4 * margin;
   }
 
   // How far a patch's bounds lie beyond the measured extremes and the width asked.
