@@ -270,25 +270,35 @@ class Certifier {
     return global((corner(a).point + corner(b).point + corner(c).point) / 3.0);
   }
 
-  // A lattice triangle's samples' extremes: the largest and the smallest value.
+  // A lattice triangle's samples' extremes: the largest and the smallest value. Its corners'
+  // samples are its vertices'; the others follow one another from its first interior sample.
   std::pair<double, double> sample_extremes(std::uint32_t t) const {
-    const std::uint32_t n = samples_.lattice_sizes[t];
-    if (n == 2) {  // most triangles of a fine mesh: its corners' samples
-      const Triangle& corners = samples_.mesh.triangles[t];
-      const double a = value(samples_.vertex_sample[corners[0]]).first;
-      const double b = value(samples_.vertex_sample[corners[1]]).first;
-      const double c = value(samples_.vertex_sample[corners[2]]).first;
-      return {std::max({a, b, c}), std::min({a, b, c})};
-    }
-    double high = -kInfinity, low = kInfinity;
-    for (std::uint32_t i = 0; i < n; ++i) {
-      for (std::uint32_t j = 0; i + j < n; ++j) {
-        const double d = value(samples_.sample_at(t, i, j)).first;
-        high = std::max(high, d);
-        low = std::min(low, d);
-      }
+    const Triangle& corners = samples_.mesh.triangles[t];
+    const double a = value(samples_.vertex_sample[corners[0]]).first;
+    const double b = value(samples_.vertex_sample[corners[1]]).first;
+    const double c = value(samples_.vertex_sample[corners[2]]).first;
+    double high = std::max({a, b, c}), low = std::min({a, b, c});
+    const std::uint64_t n = samples_.lattice_sizes[t];
+    const std::uint64_t first = samples_.first_interior_sample[t];
+    for (std::uint64_t s = first; s < first + n * (n + 1) / 2 - 3; ++s) {
+      const double d = value(s).first;
+      high = std::max(high, d);
+      low = std::min(low, d);
     }
     return {high, low};
+  }
+
+  // The largest cover with which whole_bounds settles a triangle whose samples' extremes are
+  // high and low (not positive when none does).
+  double settling_cover(double high, double low) const {
+    return cover_within(high, low, measured_.max + width_, measured_.min - width_);
+  }
+
+  // The largest cover with which whole_bounds stays within [lower, upper].
+  double cover_within(double high, double low, double upper, double lower) const {
+    if (continuous_) return std::min(upper - high, low - lower);
+    const double largest = std::max(std::fabs(high), std::fabs(low));
+    return std::min(upper - largest, -lower - largest);
   }
 
   // The bounds of a whole lattice triangle whose every point lies within `cover` of one of
@@ -300,13 +310,15 @@ class Certifier {
 
   // A whole lattice triangle settled by its samples' extremes, which most of a surface away
   // from its extremes is: its patches need no bounds of their own; they are counted, and the
-  // triangle's bounds folded. `cover` gives the covering radius scaled to the lattice when
-  // the bounds would widen the fold (rarely): the quick one settled the triangle, the exact
-  // one is what the fold keeps. A patch's own bounds are never looser.
-  template <class Cover>
-  void fold_whole(std::uint32_t t, double high, double low, Cover&& cover, BoundFold& fold) const {
+  // triangle's bounds folded. `fits(c)` says whether its covering radius, scaled to the
+  // lattice, is at most c (from the quick bound); `cover` gives it exactly, computed only when
+  // the bounds may widen the fold (rarely). A patch's own bounds are never looser.
+  template <class Fits, class Cover>
+  void fold_whole(std::uint32_t t, double high, double low, Fits&& fits, Cover&& cover,
+                  BoundFold& fold) const {
     const std::uint32_t n = samples_.lattice_sizes[t];
     fold.patches += std::uint64_t{n - 1} * (n - 1);
+    if (fits(cover_within(high, low, fold.bounds.max, fold.bounds.min))) return;
     const auto [upper, lower] = whole_bounds(high, low, cover());
     if (upper > fold.bounds.max || lower < fold.bounds.min) {
       const Mesh& mesh = samples_.mesh;
@@ -387,20 +399,24 @@ class Certifier {
             const auto [high, low] = sample_extremes(t);
             // The covering radius is at most the longest edge over sqrt(3) (the circumradius of
             // an acute triangle, whose largest angle is at least 60 degrees; half the longest
-            // edge otherwise): tried first, as it settles most triangles at a third of the cost.
-            const double longest = std::sqrt(
-                std::max({squared_norm(q - p), squared_norm(r - q), squared_norm(p - r)}));
-            const auto [quick_upper, quick_lower] =
-                whole_bounds(high, low, scaled(longest / std::sqrt(3.0)));
-            if (!is_open(quick_upper, quick_lower)) {
-              fold_whole(t, high, low, exact, part.fold);
+            // edge otherwise): tried first, squared (no root, no division on the way most
+            // triangles take), with a margin for the rounding.
+            const double longest_squared =
+                std::max({squared_norm(q - p), squared_norm(r - q), squared_norm(p - r)});
+            const auto fits = [&](double c) {
+              const double reach = (c - slack_) * steps;
+              return reach > 0 && longest_squared * (1 + 1e-9) <= 3 * reach * reach;
+            };
+            if (fits(settling_cover(high, low))) {
+              fold_whole(t, high, low, fits, exact, part.fold);
               continue;
             }
             const double cover = exact();
             const auto [whole_upper, whole_lower] = whole_bounds(high, low, cover);
             if (!is_open(whole_upper, whole_lower)) {
               fold_whole(
-                  t, high, low, [&] { return cover; }, part.fold);
+                  t, high, low, [&](double c) { return cover <= c; }, [&] { return cover; },
+                  part.fold);
               continue;
             }
             if (lattice_triangle_count(samples_.lattice_sizes[t]) >= kLeastPatchesDeferred) {
