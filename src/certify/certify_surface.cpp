@@ -142,6 +142,10 @@ class Certifier {
     return upper > measured_.max + width_ || lower < measured_.min - width_;
   }
   bool is_open(const Patch& p) const { return is_open(p.upper(), p.lower()); }
+  // What settles a patch now: the measured extremes widened by the width asked.
+  NearbyTargets targets_now() const {
+    return {measured_.max + width_, measured_.min - width_, width_};
+  }
 
   // The sampled triangles whose anchor sample this set holds.
   void find_covered_triangles() {
@@ -351,7 +355,8 @@ class Certifier {
     patch.low = cheap.lower;
     if (cover) cover->bound(patch);
     if (is_open(patch)) {
-      bound_from_corners(patch, index_.triangles(), slack_, continuous_);
+      const NearbyTargets targets = targets_now();
+      bound_from_corners(patch, index_.triangles(), slack_, continuous_, &targets);
       patch.upper_abs = std::min(patch.upper_abs, cheap.upper_abs);
       if (cover) cover->bound(patch);
     }
@@ -589,7 +594,7 @@ class Certifier {
   // only, never on the threads.
   void refine(std::vector<Patch> open) {
     while (!open.empty()) {
-      const NearbyTargets targets{measured_.max + width_, measured_.min - width_, width_};
+      const NearbyTargets targets = targets_now();
       tbb::parallel_for(std::size_t{0}, open.size(), [&](std::size_t k) {
         if (!open[k].near_checked && !splits_first(open[k])) {
           PointProbe& probe = probes_.local();
@@ -640,6 +645,7 @@ class Certifier {
   std::vector<Patch> split(const std::vector<Patch>& parents) {
     std::vector<Patch> children(4 * parents.size());
     const auto reference = index_.triangles();
+    const NearbyTargets targets = targets_now();
     tbb::parallel_for(std::size_t{0}, parents.size(), [&](std::size_t k) {
       const Patch& p = parents[k];
       const Vec3 normal = normal_of(p.triangle);
@@ -655,7 +661,7 @@ class Certifier {
         child.corners = quads[q];
         child.triangle = p.triangle;
         child.depth = p.depth + 1;
-        bound_from_corners(child, reference, slack_, continuous_);
+        bound_from_corners(child, reference, slack_, continuous_, &targets);
       }
     });
     for (std::size_t k = 0; k < parents.size(); ++k) {

@@ -118,8 +118,10 @@ std::vector<std::pair<std::size_t, std::size_t>> edge_sharing_pairs(
 }
 
 // Convexity: min over the corners' closest triangles t of max over corners of dist(c, t), and
-// over the pairs of them that make a flat convex quadrilateral.
-double convex_upper_abs(const Patch& patch, std::span<const TriangleCorners> reference) {
+// over the pairs of them that make a flat convex quadrilateral unless one triangle gives
+// `enough` already.
+double convex_upper_abs(const Patch& patch, std::span<const TriangleCorners> reference,
+                        double enough) {
   const auto& c = patch.corners;
   if (c[0].face == c[1].face && c[1].face == c[2].face) {
     return std::max({std::fabs(c[0].d), std::fabs(c[1].d), std::fabs(c[2].d)});
@@ -138,9 +140,11 @@ double convex_upper_abs(const Patch& patch, std::span<const TriangleCorners> ref
     }
     best = std::min(best, largest);
   }
-  // No bound goes below the corners' own |d|: a triangle that reaches it leaves a pair nothing
-  // to gain.
-  if (best <= std::max({std::fabs(c[0].d), std::fabs(c[1].d), std::fabs(c[2].d)})) return best;
+  // No bound goes below the corners' own |d|: a triangle that reaches it (or `enough`) leaves
+  // a pair nothing to gain.
+  if (best <= std::max({std::fabs(c[0].d), std::fabs(c[1].d), std::fabs(c[2].d), enough})) {
+    return best;
+  }
   for (int i = 0; i < 3; ++i) {
     for (int k = i + 1; k < 3; ++k) {
       if (c[i].face == c[k].face) continue;
@@ -199,17 +203,28 @@ void take_side(Patch& patch, int side, double reached) {
 }
 
 void bound_from_corners(Patch& patch, std::span<const TriangleCorners> reference, double slack,
-                        bool side_is_continuous) {
+                        bool side_is_continuous, const NearbyTargets* targets) {
   const auto& c = patch.corners;
-  patch.upper_abs = convex_upper_abs(patch, reference) + slack;
   patch.side = 0;
   patch.lower_abs = 0;
   patch.high = std::numeric_limits<double>::infinity();
   patch.low = -patch.high;
+  double h = 0;
+  if (side_is_continuous) {
+    h = covering_radius(c[0].point, c[1].point, c[2].point) * (1 + 1e-12) + slack;
+    patch.high = std::max({c[0].d, c[1].d, c[2].d}) + h;
+    patch.low = std::min({c[0].d, c[1].d, c[2].d}) - h;
+  }
+  // The |d| that settles the sides the Lipschitz bounds leave open (0: no target known).
+  double enough = 0;
+  if (targets) {
+    enough = std::numeric_limits<double>::infinity();
+    if (patch.high > targets->upper) enough = targets->upper;
+    if (patch.low < targets->lower) enough = std::min(enough, -targets->lower);
+    enough -= slack;
+  }
+  patch.upper_abs = convex_upper_abs(patch, reference, enough) + slack;
   if (!side_is_continuous) return;
-  const double h = covering_radius(c[0].point, c[1].point, c[2].point) * (1 + 1e-12) + slack;
-  patch.high = std::max({c[0].d, c[1].d, c[2].d}) + h;
-  patch.low = std::min({c[0].d, c[1].d, c[2].d}) - h;
   const int side = common_side(patch);
   if (side == 0) return;
   const double least = std::min({std::fabs(c[0].d), std::fabs(c[1].d), std::fabs(c[2].d)});

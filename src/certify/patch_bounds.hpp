@@ -81,11 +81,20 @@ void take_side(Patch& patch, int side, double reached);
 // circumradius when the triangle is acute, half its longest edge otherwise.
 double covering_radius(Vec3 a, Vec3 b, Vec3 c);
 
+// What refinement aims at: every patch's upper bound at most `upper` and its lower bound at
+// least `lower` (the measured extremes widened by the width asked, `width`).
+struct NearbyTargets {
+  double upper = 0;
+  double lower = 0;
+  double width = 0;
+};
+
 // The cheap bounds from the corners alone (convexity, Lipschitz). `side_is_continuous`:
 // the sign is the true side of a closed surface (pseudonormal), so it can only change where
-// the patch touches the surface.
+// the patch touches the surface. With `targets`, the flat pairs (the costliest part of the
+// convexity bound) are left out where |d| is already small enough to settle the patch.
 void bound_from_corners(Patch& patch, std::span<const TriangleCorners> reference, double slack,
-                        bool side_is_continuous);
+                        bool side_is_continuous, const NearbyTargets* targets = nullptr);
 
 // The reference triangles that can come within a distance of a patch, from the grid's cells.
 class NearbyTriangles {
@@ -110,14 +119,6 @@ class NearbyTriangles {
   const SearchIndex& index_;
   std::vector<std::uint32_t> stamps_;
   std::uint32_t epoch_ = 0;
-};
-
-// What refinement aims at: every patch's upper bound at most `upper` and its lower bound at
-// least `lower` (the measured extremes widened by the width asked, `width`).
-struct NearbyTargets {
-  double upper = 0;
-  double lower = 0;
-  double width = 0;
 };
 
 // Whether the shadows on the plane (unit normal n) of the reference triangles `cover` cover the
