@@ -150,9 +150,14 @@ class Certifier {
   // The sampled triangles whose anchor sample this set holds.
   void find_covered_triangles() {
     const Mesh& mesh = samples_.mesh;
+    const bool whole = samples_.whole();  // every anchor held: no sample to look up
     for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
       const std::uint32_t n = samples_.lattice_sizes[t];
       if (n < 2) continue;
+      if (whole) {
+        covered_.push_back(static_cast<std::uint32_t>(t));
+        continue;
+      }
       const std::uint64_t anchor =
           n >= 3 ? samples_.first_interior_sample[t] : samples_.vertex_sample[mesh.triangles[t][0]];
       if (is_held(anchor)) covered_.push_back(static_cast<std::uint32_t>(t));
