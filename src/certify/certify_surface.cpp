@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <optional>
 #include <vector>
+#include "util/stopwatch.hpp"
 
 #include "certify/patch_bounds.hpp"
 #include "certify/triangle_cover.hpp"
@@ -26,10 +28,11 @@ constexpr std::size_t kTriangleBlock = 1024;
 // Open patches a sampled triangle must have before they are bounded once for all of them
 // (TriangleCover): fewer cost less one by one.
 constexpr std::size_t kLeastPatchesPerCover = 8;
-// Open patches (by the cheap bounds) a sampled triangle must have for its patches to be made
-// with its TriangleCover at hand, and kept only if that leaves them open: a coarse triangle
-// over a finer reference would otherwise hold all its patches open at once (the bundled
-// box_scallop's nominal: 2.1 M patches, 0.96 GB).
+// Open patches (by the cheap bounds, and not split first) a sampled triangle must have for its
+// patches to be made with its TriangleCover at hand, and kept only if that leaves them open:
+// a coarse triangle over a finer reference would otherwise hold all its patches open at once
+// (the bundled box_scallop's nominal: 2.1 M patches, 0.96 GB). Patches that splitting settles
+// do not count: a cover costs 1-20 ms to build over a decimated workpiece's slivers.
 constexpr std::uint64_t kLeastPatchesDeferred = 256;
 // Search grid cells the triangle's gathering may visit: a few per open patch, so that its
 // cost stays that of the patches it bounds.
@@ -232,6 +235,7 @@ class Certifier {
   struct Deferred {
     std::uint32_t triangle = 0;
     std::uint64_t open = 0;
+    double largest = 0;  // the open patches' corners' largest |d|
   };
   struct LatticePass {
     BoundFold fold;
@@ -257,6 +261,8 @@ class Certifier {
   // A patch these leave open is bounded again with the convexity bound over the corners'
   // closest triangles (bound_from_corners).
   struct CheapBounds {
+    double largest = 0;        // the corners' largest |d|
+    double high = 0, low = 0;  // the corners' largest and smallest d
     double upper_abs = 0, upper = 0, lower = 0;
   };
   CheapBounds bound_cheaply(std::uint64_t a, std::uint64_t b, std::uint64_t c, double cover) const {
@@ -265,12 +271,15 @@ class Certifier {
     const auto [dc, fc] = value(c);
     const double largest = std::max({std::fabs(da), std::fabs(db), std::fabs(dc)});
     CheapBounds bounds;
+    bounds.largest = largest;
+    bounds.high = std::max({da, db, dc});
+    bounds.low = std::min({da, db, dc});
     bounds.upper_abs = (fa == fb && fb == fc ? largest : largest + cover) + slack_;
     bounds.upper = bounds.upper_abs;
     bounds.lower = -bounds.upper_abs;
     if (continuous_) {
-      bounds.upper = std::min(bounds.upper, std::max({da, db, dc}) + cover);
-      bounds.lower = std::max(bounds.lower, std::min({da, db, dc}) - cover);
+      bounds.upper = std::min(bounds.upper, bounds.high + cover);
+      bounds.lower = std::max(bounds.lower, bounds.low - cover);
     }
     return bounds;
   }
@@ -370,14 +379,20 @@ class Certifier {
     return std::nullopt;
   }
 
-  // How many of a triangle's patches the cheap bounds leave open.
-  std::uint64_t cheaply_open(std::uint32_t t, double cover) const {
-    std::uint64_t count = 0;
+  // How many of a triangle's patches the cheap bounds leave open and splitting would not settle
+  // more cheaply (splits_first), and their corners' largest |d|.
+  Deferred cheaply_open(std::uint32_t t, double cover) const {
+    Deferred open{t};
     for_each_lattice_triangle(samples_, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
       const CheapBounds cheap = bound_cheaply(a, b, c, cover);
-      count += is_open(cheap.upper, cheap.lower) ? 1 : 0;
+      if (!is_open(cheap.upper, cheap.lower) ||
+          splits_first(cover, cheap.upper, cheap.lower, cheap.high, cheap.low)) {
+        return;
+      }
+      ++open.open;
+      open.largest = std::max(open.largest, cheap.largest);
     });
-    return count;
+    return open;
   }
 
   // The covering radius of a triangle's lattice patches (similar to it, scaled by 1/(n-1)),
@@ -430,9 +445,9 @@ class Certifier {
               continue;
             }
             if (lattice_triangle_count(samples_.lattice_sizes[t]) >= kLeastPatchesDeferred) {
-              const std::uint64_t open = cheaply_open(t, cover);
-              if (open >= kLeastPatchesDeferred) {
-                part.deferred.push_back({t, open});
+              const Deferred open = cheaply_open(t, cover);
+              if (open.open >= kLeastPatchesDeferred) {
+                part.deferred.push_back(open);
                 continue;
               }
             }
@@ -504,9 +519,8 @@ class Certifier {
   // cover; those still open kept, in lattice order.
   Covered bound_deferred(const Deferred& deferred, std::uint64_t max_points) {
     const std::uint32_t t = deferred.triangle;
-    const auto [high, low] = sample_extremes(t);
     const std::optional<TriangleCover> cover =
-        cover_of(t, std::max(std::fabs(high), std::fabs(low)), deferred.open, max_points);
+        cover_of(t, deferred.largest, deferred.open, max_points);
     const double radius = lattice_cover(t);
     Covered out;
     for_each_lattice_triangle(samples_, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
@@ -577,13 +591,19 @@ class Certifier {
   // between its corners and the target it misses), is split before it is bounded by its
   // nearby triangles: three points measured cost a microsecond, the nearby proofs 10-30.
   bool splits_first(const Patch& p) const {
-    if (!continuous_ || p.near_checked) return false;
+    if (p.near_checked) return false;
     const auto& c = p.corners;
-    const double h = covering_radius(c[0].point, c[1].point, c[2].point);
-    const double upper = measured_.max + width_, lower = measured_.min - width_;
+    return splits_first(covering_radius(c[0].point, c[1].point, c[2].point), p.upper(), p.lower(),
+                        std::max({c[0].d, c[1].d, c[2].d}), std::min({c[0].d, c[1].d, c[2].d}));
+  }
+  // The same for a patch of covering radius h, bounds [lower, upper] and corners' values
+  // within [low, high].
+  bool splits_first(double h, double upper, double lower, double high, double low) const {
+    if (!continuous_) return false;
+    const NearbyTargets targets = targets_now();
     double margin = kInfinity;
-    if (p.upper() > upper) margin = upper - std::max({c[0].d, c[1].d, c[2].d});
-    if (p.lower() < lower) margin = std::min(margin, std::min({c[0].d, c[1].d, c[2].d}) - lower);
+    if (upper > targets.upper) margin = targets.upper - high;
+    if (lower < targets.lower) margin = std::min(margin, low - targets.lower);
     return margin > 0 && h <= 4 * margin;
   }
 
