@@ -1,13 +1,13 @@
 #include "ncgen/decimation.hpp"
 
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
-#include <OpenMesh/Tools/Decimater/ModHausdorffT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 
 #include <limits>
 
 #include "ncgen/decimation_mesh.hpp"
 #include "ncgen/height_field_guard.hpp"
+#include "ncgen/sample_bound.hpp"
 #include "ncgen/valence_cap.hpp"
 
 namespace ncv::gen {
@@ -71,17 +71,17 @@ Decimation decimate_height_field(const Grid& grid, const std::vector<float>& hei
       if (kept[s] || on_border(grid, s)) mesh.status(vertex).set_locked(true);
     }
     // Binary modules run in the order added and stop at the first refusal: the cheap checks
-    // first, the Hausdorff test last (it measures every sample removed around the collapse
-    // against the faces the collapse would leave: a third of the decimation's time).
+    // first, the sample bound last (it measures every sample removed around the collapse, and
+    // needs the top a height field, which the guard keeps).
     ValenceCapT<DecimationMesh>::Handle cap;
     HeightFieldGuardT<DecimationMesh>::Handle guard;
-    OpenMesh::Decimater::ModHausdorffT<DecimationMesh>::Handle hausdorff;
+    SampleBoundT<DecimationMesh>::Handle bound;
     OpenMesh::Decimater::ModQuadricT<DecimationMesh>::Handle quadric;
     decimater.add(cap);
     decimater.add(guard);
-    decimater.add(hausdorff);
+    decimater.add(bound);
     decimater.add(quadric);
-    decimater.module(hausdorff).set_tolerance(options.tolerance);
+    decimater.module(bound).set_tolerance(options.tolerance);
     decimater.initialize();
     result.collapses = decimater.decimate_to_faces(0, options.target);
   }

@@ -1,9 +1,10 @@
 // Quadric-error decimation of a triangulated height field with OpenMesh's decimater
 // (DecimaterT), as many CAM systems reduce the mesh of a milling simulation before export:
 // halfedge collapses in the order of Garland and Heckbert's quadric error (ModQuadricT), each
-// allowed only if every removed sample stays within a distance of the surface (ModHausdorffT)
-// and the top stays a height field (HeightFieldGuardT). Collapses move no vertex, so the
-// result's vertices are grid samples still and it comes back as grid triangles.
+// allowed only if every removed sample stays within a distance of the face above or below it
+// (SampleBoundT), the top stays a height field (HeightFieldGuardT) and no vertex gets far more
+// edges than a regular mesh (ValenceCapT). Collapses move no vertex, so the result's vertices
+// are grid samples still and it comes back as grid triangles.
 #pragma once
 
 #include <cstddef>
@@ -17,7 +18,7 @@ namespace ncv::gen {
 
 struct DecimationOptions {
   std::size_t target = 0;  // triangles wanted; fewer collapses when the tolerance forbids more
-  double tolerance = 0;    // mm: every sample a collapse removes stays this close (in 3D)
+  double tolerance = 0;    // mm: every removed sample stays this close (3D) to the surface
 };
 
 struct Decimation {

@@ -7,7 +7,7 @@
 //
 // The decimater rates a vertex's collapses when its neighbourhood changes, not when the
 // collapse's target gains edges from its other side, so a rating can go stale and a few
-// vertices end above the cap (at most 42 on the small parts; 99 % have at most 16).
+// vertices end above the cap (at most 55 on the large parts).
 #pragma once
 
 #include <OpenMesh/Tools/Decimater/ModBaseT.hh>
