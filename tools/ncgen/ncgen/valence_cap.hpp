@@ -7,7 +7,7 @@
 //
 // The decimater rates a vertex's collapses when its neighbourhood changes, not when the
 // collapse's target gains edges from its other side, so a rating can go stale and a few
-// vertices end above the cap (at most 55 on the large parts).
+// vertices end above the cap (at most 57 on the large parts).
 #pragma once
 
 #include <OpenMesh/Tools/Decimater/ModBaseT.hh>
