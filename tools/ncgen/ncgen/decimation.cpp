@@ -43,6 +43,8 @@ DecimationMesh build_mesh(const Grid& grid, const std::vector<float>& heights,
       vertex_of_sample[s] = static_cast<std::uint32_t>(vertex.idx());
     }
   }
+  // A disc of F triangles has 3F/2 edges and half its border's more: reserved, the kernel's
+  // arrays (2.6 M faces on the large finishing part) are not copied as they grow.
   mesh.reserve(mesh.n_vertices(), 3 * triangles.size() / 2 + grid.samples_x() + grid.samples_y(),
                triangles.size());
   for (const GridTriangle& t : triangles) {
