@@ -22,9 +22,16 @@ PROFILE = sys.argv[4] if len(sys.argv) > 4 else ""  # ncverify_search_profile
 EMBREE = sys.argv[5] if len(sys.argv) > 5 else ""  # the Embree harness, embree_sd
 REPS = int(os.environ.get("NCV_BENCH_REPS", "3"))
 QUICK = os.environ.get("NCV_BENCH_QUICK") == "1"
+ONLY = os.environ.get("NCV_BENCH_ONLY", "")  # "yardstick": that section alone
+if ONLY not in ("", "yardstick"):
+    sys.exit(f"bench: NCV_BENCH_ONLY={ONLY}: only 'yardstick' is known")
 STAGES = [("roughing", "core_roughing.stl"), ("semifinishing", "core_semifinishing.stl"),
           ("finishing", "core_finishing.stl")]
 NOMINAL = os.path.join(LARGE, "core_nominal.stl")
+# The second family (ncgen all --family decimated): the same stages meshed by decimation, and
+# the finishing part again shuffled and far from the origin with its nominal moved alike.
+DECIMATED = os.path.join(LARGE, "decimated")
+DECIMATED_NOMINAL = os.path.join(DECIMATED, "core_nominal.stl")
 NOMINALS = [("17 k", NOMINAL), ("170 k", os.path.join(LARGE, "core_nominal_170k.stl")),
             ("1 M", os.path.join(LARGE, "core_nominal_1m.stl")),
             ("1.7 M", os.path.join(LARGE, "core_nominal_1700k.stl"))]
@@ -195,26 +202,64 @@ def embree_rate(nominal, points, threads):
 
 def yardstick(stages):
     """Per stage and thread count: ncverify's distance phase (forward, in `run`) and the Embree
-    harness on the same samples, taken in turn REPS times; the medians and the median of the
-    rounds' ratios (ncverify samples/s over Embree points/s)."""
+    harness on the same samples, taken in turn REPS times; the medians, the median of the
+    rounds' ratios (ncverify samples/s over Embree points/s) and the median stats phase."""
     rows = []
     with tempfile.TemporaryDirectory(dir=os.environ.get("NCV_BENCH_TMP")) as tmp:
         for family, stage, workpiece, nominal in stages:
             points = os.path.join(tmp, "points.f64")
             count = sample_points(workpiece, points)
             for threads in (1, 2):
-                ours, theirs, ratios, tested = [], [], [], 0
+                ours, theirs, ratios, stats, tested = [], [], [], [], 0
                 for _ in range(REPS):
                     t, _r = run(workpiece, nominal, threads, extra=("--one-sided",))
                     if t["samples"] != count:
                         sys.exit(f"bench: {count} points written for {t['samples']} samples")
                     ours.append(t["samples"] / t["phases"]["distance"])
+                    stats.append(t["phases"]["stats"])
                     theirs.append(embree_rate(nominal, points, threads))
                     ratios.append(ours[-1] / theirs[-1])
                     tested = t["triangles_tested_per_sample"]
                 rows.append((family, stage, count, threads, statistics.median(ours),
-                             statistics.median(theirs), statistics.median(ratios), tested))
+                             statistics.median(theirs), statistics.median(ratios), tested,
+                             statistics.median(stats)))
     return rows
+
+
+def yardstick_stages():
+    """The workloads of the yardstick: both families' stages, and the decimated finishing part
+    shuffled and far from the origin (when the second family has been generated)."""
+    stages = [("ncgen", stage, os.path.join(LARGE, file), NOMINAL) for stage, file in STAGES]
+    if os.path.exists(DECIMATED_NOMINAL):
+        stages += [("decimated", stage, os.path.join(DECIMATED, file), DECIMATED_NOMINAL)
+                   for stage, file in STAGES]
+        stages.append(("decimated", "finishing far", os.path.join(DECIMATED,
+                                                                  "core_finishing_far.stl"),
+                       os.path.join(DECIMATED, "core_nominal_far.stl")))
+    return stages
+
+
+def yardstick_section(p):
+    """The yardstick table, or why there is none."""
+    if not os.path.exists(EMBREE):
+        p("(the Embree harness was not built: no yardstick; scripts/bench.sh builds it where "
+          "libembree-dev is installed)")
+        p("")
+        return
+    p("== The yardstick: distance phase per sample, ncverify (run, forward) vs the Embree "
+      "harness (../shared/tools/embree_sd), same samples, taken in turn; median of "
+      f"{REPS} ==")
+    p(f"{'family':<10}{'stage':<15}{'samples':>10}{'threads':>8}{'ncverify M/s':>13}"
+      f"{'Embree M/s':>11}{'ratio':>7}{'tested':>8}{'stats s':>9}")
+    for family, stage, count, threads, ours, theirs, ratio, tested, stats in yardstick(
+            yardstick_stages()):
+        p(f"{family:<10}{stage:<15}{count:>10}{threads:>8}{ours / 1e6:>13.2f}"
+          f"{theirs / 1e6:>11.2f}{ratio:>6.2f}x{tested:>8.2f}{stats:>9.3f}")
+    p("  goal (issue 24): ratio >= 5 on 2 threads, every stage; 1 thread no worse than 2")
+    p("  decimated: ncgen all --family decimated (samples/large/decimated/); finishing far: "
+      "its triangles shuffled, it and its nominal moved by (20000, -15000, 5000) mm")
+    p("  stats s: run's stats phase, one direction (--one-sided)")
+    p("")
 
 
 def ns_per_sample(t):
@@ -226,6 +271,12 @@ def main():
     started = time.time()
     lines = []
     p = lines.append
+    if ONLY == "yardstick":
+        yardstick_section(p)
+        p(f"(bench took {time.time() - started:.0f} s; load average "
+          f"{os.getloadavg()[0]:.2f} at the end; {REPS} repetitions)")
+        print("\n".join(lines))
+        return
 
     # Table 1 and Table 2: every stage, both schemes, 2 threads.
     # The finishing targets compare 1 and 2 threads: runs in alternating pairs, and more of
@@ -398,22 +449,7 @@ def main():
           f"ns, {b / a:.2f}; with a perfect hint {b_perfect:.0f} / {a_perfect:.0f} ns, "
           f"{b_perfect / a_perfect:.2f}")
     p("")
-    if os.path.exists(EMBREE):
-        p("== The yardstick: distance phase per sample, ncverify (run, forward) vs the Embree "
-          "harness (../shared/tools/embree_sd), same samples, taken in turn; median of "
-          f"{REPS} ==")
-        p(f"{'family':<8}{'stage':<15}{'samples':>10}{'threads':>8}{'ncverify M/s':>13}"
-          f"{'Embree M/s':>11}{'ratio':>7}{'tested':>8}")
-        for family, stage, count, threads, ours, theirs, ratio, tested in yardstick(
-                [("ncgen", stage, os.path.join(LARGE, file), NOMINAL) for stage, file in STAGES]):
-            p(f"{family:<8}{stage:<15}{count:>10}{threads:>8}{ours / 1e6:>13.2f}"
-              f"{theirs / 1e6:>11.2f}{ratio:>6.2f}x{tested:>8.2f}")
-        p("  goal (issue 24): ratio >= 5 on 2 threads, every stage; 1 thread no worse than 2")
-        p("")
-    else:
-        p("(the Embree harness was not built: no yardstick; scripts/bench.sh builds it where "
-          "libembree-dev is installed)")
-        p("")
+    yardstick_section(p)
     p("== Finishing phases, 1 vs 2 threads (median of runs, s) ==")
     p(f"{'threads':<8}" + "".join(f"{ph:>11}" for ph in PHASES) + f"{'total':>9}")
     for label, t in (("1", fin1), ("2", fin2)):

@@ -7,8 +7,12 @@
 # the grid build on the three nominals and the growth with δ and the nominal's size, and
 # prints one table with the paper's Table 1 and Table 2 figures and the performance targets
 # beside the measured values. Details: docs/PERFORMANCE.md.
+# The second workpiece family (ncgen all --family decimated: decimated meshes, and the same
+# shuffled and far from the origin) goes into samples/large/decimated/, once; the yardstick
+# measures both families.
 # Usage: scripts/bench.sh           (NCV_BENCH_REPS=N repetitions, default 3;
-#                                     NCV_BENCH_QUICK=1 skips δ = 0.03 %)
+#                                     NCV_BENCH_QUICK=1 skips δ = 0.03 %;
+#                                     NCV_BENCH_ONLY=yardstick runs the yardstick alone)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -16,7 +20,8 @@ build="${NCV_BENCH_BUILD:-build-bench}"
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DNCV_NATIVE=OFF >&2
 cmake --build "$build" --target ncverify ncgen >&2
 micro="$build/bench/ncverify_microbench"
-if cmake --build "$build" --target help | grep -q ncverify_microbench; then
+only="${NCV_BENCH_ONLY:-}"
+if [ -z "$only" ] && cmake --build "$build" --target help | grep -q ncverify_microbench; then
   cmake --build "$build" --target ncverify_microbench ncverify_search_profile >&2
 fi
 ncgen="$build/tools/ncgen/ncgen"
@@ -25,13 +30,18 @@ large=samples/large
 if [ ! -f "$large/manifest.json" ]; then
   "$ncgen" all --seed 1 --size large --out "$large" >&2
 fi
+if [ ! -f "$large/decimated/manifest.json" ]; then
+  "$ncgen" all --seed 1 --size large --family decimated --out "$large/decimated" >&2
+fi
 # The same part tessellated finer (ncgen nominal --tolerance/--level).
-[ -f "$large/core_nominal_170k.stl" ] ||
-  "$ncgen" nominal -o "$large/core_nominal_170k.stl" --tolerance 0.0045 --level 10 >&2
-[ -f "$large/core_nominal_1m.stl" ] ||
-  "$ncgen" nominal -o "$large/core_nominal_1m.stl" --tolerance 0.0006 --level 11 >&2
-[ -f "$large/core_nominal_1700k.stl" ] ||
-  "$ncgen" nominal -o "$large/core_nominal_1700k.stl" --tolerance 0.0003 --level 11 >&2
+if [ -z "$only" ]; then
+  [ -f "$large/core_nominal_170k.stl" ] ||
+    "$ncgen" nominal -o "$large/core_nominal_170k.stl" --tolerance 0.0045 --level 10 >&2
+  [ -f "$large/core_nominal_1m.stl" ] ||
+    "$ncgen" nominal -o "$large/core_nominal_1m.stl" --tolerance 0.0006 --level 11 >&2
+  [ -f "$large/core_nominal_1700k.stl" ] ||
+    "$ncgen" nominal -o "$large/core_nominal_1700k.stl" --tolerance 0.0003 --level 11 >&2
+fi
 
 # The yardstick: the Embree harness beside the repository (../shared/tools/embree_sd), built
 # into build-embree/ where libembree-dev is installed; without it the table says so.

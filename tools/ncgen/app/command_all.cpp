@@ -3,11 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "commands.hpp"
 #include "ncgen/analytic_parts.hpp"
+#include "ncgen/decimated_parts.hpp"
 #include "ncgen/nominal_part.hpp"
 #include "ncgen/part_size.hpp"
 #include "ncgen/workpiece.hpp"
@@ -42,6 +46,57 @@ nlohmann::json mould_core_set(const fs::path& out, std::uint64_t seed, double si
               workpiece["nominal"] = "core_nominal.stl";
               parts.push_back(workpiece);
             });
+  return parts;
+}
+
+// Where the far copies of the decimated family lie: tens of metres from the origin, as in a
+// machine's frame, on every axis and on both sides of it.
+const Vec3 far_offset{20000, -15000, 5000};
+
+std::string far_file(const std::string& file) {
+  return file.substr(0, file.size() - 4) + "_far.stl";
+}
+
+// The part written as it is and again shuffled and far from the origin (the nominal moved by
+// the same vector, so that the pair still fits); their manifest entries.
+nlohmann::json save_near_and_far(const MeshedPart& part, const fs::path& out,
+                                 const std::string& file, nlohmann::json fields,
+                                 std::uint64_t seed) {
+  nlohmann::json both = nlohmann::json::array();
+  nlohmann::json json = save_part(part, {}, out / file);
+  json.update(fields);
+  both.push_back(json);
+  if (fields.contains("nominal")) {
+    fields["nominal"] = far_file(fields["nominal"].get<std::string>());
+  }
+  json = save_part(part, {true, seed, far_offset}, out / far_file(file));
+  json.update(fields);
+  both.push_back(json);
+  return both;
+}
+
+// The decimated family: the nominal and every stage meshed by decimation, each also shuffled
+// and far from the origin. Decimation is serial, so each stage's runs on a thread of its own
+// while the simulation mills the next stage and the threads decimate the stages before: the
+// large set takes about the finishing stage's decimation instead of the sum of all of them.
+nlohmann::json decimated_set(const fs::path& out, std::uint64_t seed, double size) {
+  const Meshing meshing{Mesher::decimate, {}};
+  const MouldCore part = make_mould_core(seed);
+  std::vector<std::future<nlohmann::json>> stages;
+  mill_part(part, size, mould_core_stages(),
+            [&](const MillingStage& stage, const MillingSimulation& simulation) {
+              stages.push_back(std::async(std::launch::async, [=, &out] {
+                return save_near_and_far(
+                    mesh_workpiece(stage, simulation, size, meshing), out, workpiece_file(stage),
+                    {{"role", "workpiece"}, {"nominal", "core_nominal.stl"}}, seed);
+              }));
+            });
+  nlohmann::json parts =
+      save_near_and_far(mesh_decimated_nominal(part, decimated_nominal_triangles, meshing), out,
+                        "core_nominal.stl", {{"role", "nominal"}}, seed);
+  for (std::future<nlohmann::json>& stage : stages) {
+    for (const nlohmann::json& json : stage.get()) parts.push_back(json);
+  }
   return parts;
 }
 
@@ -118,6 +173,7 @@ void add_all_command(CLI::App& app, const GlobalOptions& global) {
   struct Options {
     std::string out;
     std::string size = "small";
+    std::string family = "rtin";
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
@@ -127,19 +183,31 @@ void add_all_command(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--out", options->out, "Directory to write into")->required();
   command->add_option("--size", options->size, "Workpiece size: small, medium, large or factor")
       ->capture_default_str();
+  command
+      ->add_option("--family", options->family,
+                   "rtin: the mould core set, boxes and missing features; decimated: the mould "
+                   "core meshed by decimation, each part also shuffled and far from the origin")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"rtin", "decimated"}));
   command->callback([options, &global] {
     const double size = parse_size(options->size);
     const fs::path out = options->out;
     fs::create_directories(out);
-    nlohmann::json parts = mould_core_set(out, global.seed, size);
-    for (const nlohmann::json& box : box_set(out)) parts.push_back(box);
-    for (const nlohmann::json& part : missing_feature_set(out)) parts.push_back(part);
-    write_json({{"generator", "ncgen"},
-                {"seed", global.seed},
-                {"size", options->size},
-                {"size_factor", size},
-                {"parts", parts}},
-               out / "manifest.json");
+    nlohmann::json parts;
+    if (options->family == "decimated") {
+      parts = decimated_set(out, global.seed, size);
+    } else {
+      parts = mould_core_set(out, global.seed, size);
+      for (const nlohmann::json& box : box_set(out)) parts.push_back(box);
+      for (const nlohmann::json& part : missing_feature_set(out)) parts.push_back(part);
+    }
+    nlohmann::json manifest = {{"generator", "ncgen"},
+                               {"seed", global.seed},
+                               {"size", options->size},
+                               {"size_factor", size},
+                               {"parts", parts}};
+    if (options->family != "rtin") manifest["family"] = options->family;
+    write_json(manifest, out / "manifest.json");
   });
 }
 

@@ -2,7 +2,9 @@
 #include <string>
 
 #include "commands.hpp"
+#include "meshing_options.hpp"
 #include "ncgen/nominal_part.hpp"
+#include "ncgen/placement.hpp"
 #include "part_files.hpp"
 
 namespace ncv::gen::app {
@@ -11,6 +13,8 @@ void add_nominal_command(CLI::App& app, const GlobalOptions& global) {
   struct Options {
     std::string output;
     NominalOptions nominal;
+    MeshingOptions meshing;
+    std::size_t triangles = decimated_nominal_triangles;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
@@ -24,8 +28,23 @@ void add_nominal_command(CLI::App& app, const GlobalOptions& global) {
                    "Height samples: 2^level cells per 40 mm tile")
       ->capture_default_str()
       ->check(CLI::Range(4, 11));
+  add_meshing_options(*command, options->meshing);
+  command
+      ->add_option("--triangles", options->triangles,
+                   "decimate: triangles of the nominal (the RTIN's follow from --tolerance)")
+      ->capture_default_str()
+      ->check(CLI::Range(1000, 10'000'000));
   command->callback([options, &global] {
-    const ncv::Mesh mesh = nominal_mesh(make_mould_core(global.seed), options->nominal);
+    const MouldCore part = make_mould_core(global.seed);
+    const Meshing meshing = options->meshing.meshing();
+    const Placement placement = options->meshing.placement(global.seed);
+    if (meshing.mesher == Mesher::decimate) {
+      save_part(mesh_decimated_nominal(part, options->triangles, meshing), placement,
+                options->output);
+      return;
+    }
+    ncv::Mesh mesh = nominal_mesh(part, options->nominal);
+    place(mesh, placement);
     save_mesh(mesh, options->output, "ncgen mould core nominal");
   });
 }

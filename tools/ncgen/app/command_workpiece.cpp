@@ -2,6 +2,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "meshing_options.hpp"
 #include "ncgen/part_size.hpp"
 #include "ncgen/workpiece.hpp"
 #include "part_files.hpp"
@@ -14,6 +15,7 @@ void add_workpiece_command(CLI::App& app, const GlobalOptions& global) {
     std::string stage;
     std::string size = "small";
     std::string report;
+    MeshingOptions meshing;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
@@ -28,15 +30,18 @@ void add_workpiece_command(CLI::App& app, const GlobalOptions& global) {
       ->capture_default_str();
   command->add_option("--report", options->report,
                       "JSON file describing the process, tolerance and gouges");
+  add_meshing_options(*command, options->meshing);
   command->callback([options, &global] {
     const double size = parse_size(options->size);
+    const Meshing meshing = options->meshing.meshing();
+    const Placement placement = options->meshing.placement(global.seed);
     std::vector<MillingStage> stages = mould_core_stages();
     stages.resize(stage_index(options->stage) + 1);
     mill_part(make_mould_core(global.seed), size, stages,
               [&](const MillingStage& stage, const MillingSimulation& simulation) {
                 if (stage.name != stages.back().name) return;
                 const nlohmann::json json =
-                    save_workpiece(stage, simulation, size, options->output);
+                    save_workpiece(stage, simulation, size, options->output, meshing, placement);
                 if (!options->report.empty()) write_json(json, options->report);
               });
   });

@@ -95,9 +95,22 @@ void add_walls(const std::vector<std::uint32_t>& border, const std::vector<std::
 
 ncv::Mesh height_field_solid(const Grid& grid, const std::vector<float>& heights,
                              const std::vector<float>& errors, float tolerance, double floor_z) {
+  return close_height_field(grid, heights, rtin_triangles(grid, errors, tolerance), floor_z);
+}
+
+std::size_t closure_triangle_count(const Grid& grid, const std::vector<GridTriangle>& top) {
+  std::vector<std::uint32_t> used(grid.sample_count(), unused);
+  for (const GridTriangle& t : top) {
+    for (const std::uint32_t s : t) used[s] = 0;
+  }
+  const std::vector<std::uint32_t> border = border_samples(grid, used);
+  return 2 * border.size() + bottom_triangles(grid, border).size();
+}
+
+ncv::Mesh close_height_field(const Grid& grid, const std::vector<float>& heights,
+                             const std::vector<GridTriangle>& top, double floor_z) {
   ncv::Mesh mesh;
-  const std::vector<std::uint32_t> top_vertex =
-      add_top(grid, heights, rtin_triangles(grid, errors, tolerance), mesh);
+  const std::vector<std::uint32_t> top_vertex = add_top(grid, heights, top, mesh);
   const std::vector<std::uint32_t> border = border_samples(grid, top_vertex);
   const auto bottom_vertex = add_bottom(grid, bottom_triangles(grid, border), floor_z, mesh);
   add_walls(border, top_vertex, bottom_vertex, mesh);

@@ -10,13 +10,6 @@
 #include "ncgen/rtin.hpp"
 
 namespace ncv::gen {
-namespace {
-
-// Below some size the triangle budget would need chord errors like the roughing steps
-// themselves; past this tolerance the workpiece keeps more triangles than asked instead.
-constexpr float coarsest_tolerance = 0.5f;
-
-}  // namespace
 
 Workpiece workpiece_mesh(const MillingSimulation& simulation, std::size_t triangles) {
   const Grid& grid = simulation.grid();
@@ -28,7 +21,8 @@ Workpiece workpiece_mesh(const MillingSimulation& simulation, std::size_t triang
   }
   propagate_errors(grid, errors);
   Workpiece workpiece;
-  workpiece.tolerance = std::min(tolerance_for_count(grid, errors, triangles), coarsest_tolerance);
+  workpiece.tolerance =
+      std::min(tolerance_for_count(grid, errors, triangles), coarsest_workpiece_tolerance);
   workpiece.mesh = height_field_solid(grid, simulation.zmap(), errors, workpiece.tolerance, 0.0);
   return workpiece;
 }

@@ -16,6 +16,10 @@ namespace ncv::gen {
 // Height of the stock block the workpieces are milled from.
 constexpr double stock_height = 32.0;
 
+// Below some size the triangle budget would need chord errors like the roughing steps
+// themselves; past this tolerance the workpiece keeps more triangles than asked instead.
+constexpr float coarsest_workpiece_tolerance = 0.5f;
+
 struct Workpiece {
   ncv::Mesh mesh;
   float tolerance = 0;  // chord tolerance that gave the requested triangle count
