@@ -21,9 +21,10 @@
 namespace ncv {
 namespace {
 
-// Splitting halves a patch's edges; past this depth a patch is 2^-30 of its lattice
-// sub-triangle, about the rounding slack of the coordinates, and splitting says no more.
-constexpr std::uint32_t kMaxDepth = 30;
+// Splitting halves a patch's longest edge every second split at least (split()); past this
+// depth a patch is at most 2^-30 of its lattice sub-triangle, about the rounding slack of the
+// coordinates, and splitting says no more.
+constexpr std::uint32_t kMaxDepth = 60;
 constexpr std::size_t kTriangleBlock = 1024;
 // Open patches a sampled triangle must have before they are bounded once for all of them
 // (TriangleCover): fewer cost less one by one.
@@ -653,7 +654,6 @@ class Certifier {
                                      waiting.begin() + static_cast<std::ptrdiff_t>(take));
       std::vector<Patch> children = split(worst);
       splits_ += take;
-      added_ += 3 * take;
       open.assign(waiting.begin() + static_cast<std::ptrdiff_t>(take), waiting.end());
       for (const Patch& child : children) {
         if (is_open(child)) {
@@ -665,10 +665,29 @@ class Certifier {
     }
   }
 
-  // Each patch into four at its edge midpoints; the midpoints measured, added to the measured
-  // extremes in order.
+  // How a patch is split: an obtuse one in two at the middle of its longest edge (its
+  // covering radius is half that edge, which the halves' are at most half of, or their
+  // other edges', for one point measured), any other into four at its edge midpoints
+  // (three points): the slivers a decimated mesh has along its scallops take fewer points.
+  // Returns the longest edge's first corner for a bisection, -1 for four.
+  static int bisected_edge(const Patch& p) {
+    const auto& c = p.corners;
+    std::array<double, 3> squared{};
+    for (int k = 0; k < 3; ++k) squared[k] = squared_norm(c[(k + 1) % 3].point - c[k].point);
+    const int e =
+        static_cast<int>(std::max_element(squared.begin(), squared.end()) - squared.begin());
+    return squared[e] > squared[(e + 1) % 3] + squared[(e + 2) % 3] ? e : -1;
+  }
+
+  // Each patch split (bisected_edge); the new points measured, added to the measured extremes
+  // in order. Returns the children, in order, and counts the points in added_.
   std::vector<Patch> split(const std::vector<Patch>& parents) {
-    std::vector<Patch> children(4 * parents.size());
+    std::vector<std::size_t> first(parents.size() + 1, 0);
+    for (std::size_t k = 0; k < parents.size(); ++k) {
+      first[k + 1] = first[k] + (bisected_edge(parents[k]) >= 0 ? 2 : 4);
+    }
+    std::vector<Patch> children(first.back());
+    std::vector<std::array<PatchCorner, 3>> points(parents.size());
     const auto reference = index_.triangles();
     const NearbyTargets targets = targets_now();
     tbb::parallel_for(std::size_t{0}, parents.size(), [&](std::size_t k) {
@@ -676,23 +695,34 @@ class Certifier {
       const Vec3 normal = normal_of(p.triangle);
       PointProbe& probe = probes_.local();
       const auto& c = p.corners;
-      const PatchCorner ab = probe.measure(0.5 * (c[0].point + c[1].point), normal);
-      const PatchCorner bc = probe.measure(0.5 * (c[1].point + c[2].point), normal);
-      const PatchCorner ca = probe.measure(0.5 * (c[2].point + c[0].point), normal);
-      const std::array<std::array<PatchCorner, 3>, 4> quads = {
-          {{c[0], ab, ca}, {ab, c[1], bc}, {ca, bc, c[2]}, {ab, bc, ca}}};
-      for (int q = 0; q < 4; ++q) {
-        Patch& child = children[4 * k + q];
-        child.corners = quads[q];
+      const auto middle = [&](int i) {
+        return probe.measure(0.5 * (c[i].point + c[(i + 1) % 3].point), normal);
+      };
+      std::vector<std::array<PatchCorner, 3>> parts;
+      const int e = bisected_edge(p);
+      if (e >= 0) {
+        const PatchCorner m = middle(e);
+        const PatchCorner &from = c[e], &to = c[(e + 1) % 3], &apex = c[(e + 2) % 3];
+        parts = {{from, m, apex}, {m, to, apex}};
+        points[k][0] = m;
+      } else {
+        const PatchCorner ab = middle(0), bc = middle(1), ca = middle(2);
+        parts = {{c[0], ab, ca}, {ab, c[1], bc}, {ca, bc, c[2]}, {ab, bc, ca}};
+        points[k] = {ab, bc, ca};
+      }
+      for (std::size_t q = 0; q < parts.size(); ++q) {
+        Patch& child = children[first[k] + q];
+        child.corners = parts[q];
         child.triangle = p.triangle;
         child.depth = p.depth + 1;
         bound_from_corners(child, reference, slack_, continuous_, &targets);
       }
     });
     for (std::size_t k = 0; k < parents.size(); ++k) {
-      // The midpoints are the corners the children do not share with their parent.
-      const Patch& middle = children[4 * k + 3];
-      for (const PatchCorner& m : middle.corners) measured_.add(m.d, global(m.point));
+      const std::size_t count = first[k + 1] - first[k] == 2 ? 1 : 3;
+      for (std::size_t i = 0; i < count; ++i)
+        measured_.add(points[k][i].d, global(points[k][i].point));
+      added_ += count;
     }
     return children;
   }
