@@ -26,16 +26,8 @@ import json
 near, rough = (json.load(open(f + '.json')) for f in ('near', 'roughing'))
 assert near['verdict'] == 'fail' and near['error']['min']['value'] < -0.25, near['error']['min']
 assert rough['error']['max']['value'] > 2 and rough['error']['mean'] > 0.3, rough['error']"
-check "every planted gouge is a gouge region at the manifest's place and depth" /usr/bin/python3 -c "
-import json
-manifest = {p['file']: p for p in json.load(open('parts/manifest.json'))['parts']}
-gouges = [g for g in json.load(open('near.json'))['regions'] if g['kind'] == 'gouge']
-for planted in manifest['core_finishing.stl']['gouges']:
-    near = [g for g in gouges if g['bbox_min'][0] <= planted['x'] <= g['bbox_max'][0]
-            and g['bbox_min'][1] <= planted['y'] <= g['bbox_max'][1]]
-    assert near, ('not found', planted)
-    deepest = min(g['extreme']['value'] for g in near)
-    assert abs(deepest + planted['depth']) < 0.02, (deepest, planted)"
+check "every planted gouge is a gouge region at the manifest's place and depth" \
+  /usr/bin/python3 "$NCV_SOURCE_DIR/tests/e2e/check_planted_gouges.py" parts/manifest.json near.json
 check "the shuffled part gives the same errors, both directions" /usr/bin/python3 -c "
 import json
 a, b = (json.load(open(f + '.json')) for f in ('near', 'shuffled'))

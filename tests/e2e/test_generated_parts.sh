@@ -25,17 +25,7 @@ assert 0 < b < a, (a, b)"
 check "finishing is near nominal: |mean| below 0.05 mm, 90 % of the area within tolerance" /usr/bin/python3 -c "
 import json; r = json.load(open('finishing.json'))
 assert abs(r['error']['mean']) < 0.05 and r['tolerance']['share_within'] > 0.9, (r['error'], r['tolerance'])"
-check "every planted gouge is found, where and as deep as the manifest says" /usr/bin/python3 -c "
-import json
-manifest = {p['file']: p for p in json.load(open('$PARTS/manifest.json'))['parts']}
-report = json.load(open('finishing.json'))
-gouges = [g for g in report['regions'] if g['kind'] == 'gouge']
-for planted in manifest['core_finishing.stl']['gouges']:
-    # A flat end mill leaves a flat-bottomed disc: the extreme may be anywhere on it, so
-    # the region's box must hold the planted centre.
-    near = [g for g in gouges if g['bbox_min'][0] <= planted['x'] <= g['bbox_max'][0]
-            and g['bbox_min'][1] <= planted['y'] <= g['bbox_max'][1]]
-    assert near, ('not found', planted)
-    deepest = min(g['extreme']['value'] for g in near)
-    assert abs(deepest + planted['depth']) < 0.02, (deepest, planted)"
+check "every planted gouge is found, where and as deep as the manifest says" \
+  /usr/bin/python3 "$NCV_SOURCE_DIR/tests/e2e/check_planted_gouges.py" "$PARTS/manifest.json" \
+  finishing.json
 finish
