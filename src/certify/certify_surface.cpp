@@ -232,7 +232,8 @@ class Certifier {
         [](Extremes& into, const Extremes& part) { into.add(part); });
   }
 
-  // A triangle whose patches are made with its cover, and how many the cheap bounds left open.
+  // A triangle whose patches are made with its cover: how many of them the cheap bounds leave
+  // open and splitting would not settle first, and their corners' largest |d|.
   struct Deferred {
     std::uint32_t triangle = 0;
     std::uint64_t open = 0;
@@ -254,6 +255,11 @@ class Certifier {
     return {c.d, c.face};
   }
 
+  struct CheapBounds {
+    double largest = 0;        // the corners' largest |d|
+    double high = 0, low = 0;  // the corners' largest and smallest d
+    double upper_abs = 0, upper = 0, lower = 0;
+  };
   // The cheap bounds of a lattice patch from its corners' values alone, without building it:
   // corners that share their closest triangle bound |d| by their largest |d| (convexity),
   // others by that plus the covering radius (Lipschitz); the covering radius scaled to the
@@ -261,11 +267,6 @@ class Certifier {
   // the corners' values, where the sign is the true side.
   // A patch these leave open is bounded again with the convexity bound over the corners'
   // closest triangles (bound_from_corners).
-  struct CheapBounds {
-    double largest = 0;        // the corners' largest |d|
-    double high = 0, low = 0;  // the corners' largest and smallest d
-    double upper_abs = 0, upper = 0, lower = 0;
-  };
   CheapBounds bound_cheaply(std::uint64_t a, std::uint64_t b, std::uint64_t c, double cover) const {
     const auto [da, fa] = value(a);
     const auto [db, fb] = value(b);
@@ -307,13 +308,8 @@ class Certifier {
     return {high, low};
   }
 
-  // The largest cover with which whole_bounds settles a triangle whose samples' extremes are
-  // high and low (not positive when none does).
-  double settling_cover(double high, double low) const {
-    return cover_within(high, low, measured_.max + width_, measured_.min - width_);
-  }
-
-  // The largest cover with which whole_bounds stays within [lower, upper].
+  // The largest cover with which whole_bounds stays within [lower, upper] for a triangle whose
+  // samples' extremes are high and low (not positive when none does).
   double cover_within(double high, double low, double upper, double lower) const {
     if (continuous_) return std::min(upper - high, low - lower);
     const double largest = std::max(std::fabs(high), std::fabs(low));
@@ -410,6 +406,7 @@ class Certifier {
   // ones are returned, in lattice order, and the triangles with many left for their covers.
   LatticePass bound_lattice() {
     const Mesh& mesh = samples_.mesh;
+    const NearbyTargets targets = targets_now();
     LatticePass pass = ordered_reduce(
         covered_.size(), kTriangleBlock, LatticePass{},
         [&](std::size_t begin, std::size_t end) {
@@ -418,22 +415,20 @@ class Certifier {
             const std::uint32_t t = covered_[k];
             const double steps = samples_.lattice_sizes[t] - 1;
             const Vec3 p = mesh.corner(t, 0), q = mesh.corner(t, 1), r = mesh.corner(t, 2);
-            const auto scaled = [&](double radius) {
-              return radius / steps * (1 + 1e-12) + slack_;
-            };
-            const auto exact = [&] { return scaled(covering_radius(p, q, r)); };
+            const auto exact = [&] { return lattice_cover(t); };
             const auto [high, low] = sample_extremes(t);
             // The covering radius is at most the longest edge over sqrt(3) (the circumradius of
             // an acute triangle, whose largest angle is at least 60 degrees; half the longest
             // edge otherwise): tried first, squared (no root, no division on the way most
-            // triangles take), with a margin for the rounding.
+            // triangles take), with margins for the rounding: one slack beyond the one the
+            // scaled radius carries, far above the few ulps the margin c itself may be off.
             const double longest_squared =
                 std::max({squared_norm(q - p), squared_norm(r - q), squared_norm(p - r)});
             const auto fits = [&](double c) {
-              const double reach = (c - slack_) * steps;
+              const double reach = (c - 2 * slack_) * steps;
               return reach > 0 && longest_squared * (1 + 1e-9) <= 3 * reach * reach;
             };
-            if (fits(settling_cover(high, low))) {
+            if (fits(cover_within(high, low, targets.upper, targets.lower))) {
               fold_whole(t, high, low, fits, exact, part.fold);
               continue;
             }
@@ -682,12 +677,14 @@ class Certifier {
   // Each patch split (bisected_edge); the new points measured, added to the measured extremes
   // in order. Returns the children, in order, and counts the points in added_.
   std::vector<Patch> split(const std::vector<Patch>& parents) {
+    std::vector<int> edges(parents.size());
     std::vector<std::size_t> first(parents.size() + 1, 0);
     for (std::size_t k = 0; k < parents.size(); ++k) {
-      first[k + 1] = first[k] + (bisected_edge(parents[k]) >= 0 ? 2 : 4);
+      edges[k] = bisected_edge(parents[k]);
+      first[k + 1] = first[k] + (edges[k] >= 0 ? 2 : 4);
     }
     std::vector<Patch> children(first.back());
-    std::vector<std::array<PatchCorner, 3>> points(parents.size());
+    std::vector<std::array<PatchCorner, 3>> points(parents.size());  // the new ones, per parent
     const auto reference = index_.triangles();
     const NearbyTargets targets = targets_now();
     tbb::parallel_for(std::size_t{0}, parents.size(), [&](std::size_t k) {
@@ -698,19 +695,19 @@ class Certifier {
       const auto middle = [&](int i) {
         return probe.measure(0.5 * (c[i].point + c[(i + 1) % 3].point), normal);
       };
-      std::vector<std::array<PatchCorner, 3>> parts;
-      const int e = bisected_edge(p);
-      if (e >= 0) {
+      std::array<std::array<PatchCorner, 3>, 4> parts;
+      if (const int e = edges[k]; e >= 0) {
         const PatchCorner m = middle(e);
         const PatchCorner &from = c[e], &to = c[(e + 1) % 3], &apex = c[(e + 2) % 3];
-        parts = {{from, m, apex}, {m, to, apex}};
+        parts[0] = {from, m, apex};
+        parts[1] = {m, to, apex};
         points[k][0] = m;
       } else {
         const PatchCorner ab = middle(0), bc = middle(1), ca = middle(2);
-        parts = {{c[0], ab, ca}, {ab, c[1], bc}, {ca, bc, c[2]}, {ab, bc, ca}};
+        parts = {{{c[0], ab, ca}, {ab, c[1], bc}, {ca, bc, c[2]}, {ab, bc, ca}}};
         points[k] = {ab, bc, ca};
       }
-      for (std::size_t q = 0; q < parts.size(); ++q) {
+      for (std::size_t q = 0; q < first[k + 1] - first[k]; ++q) {
         Patch& child = children[first[k] + q];
         child.corners = parts[q];
         child.triangle = p.triangle;
@@ -719,9 +716,10 @@ class Certifier {
       }
     });
     for (std::size_t k = 0; k < parents.size(); ++k) {
-      const std::size_t count = first[k + 1] - first[k] == 2 ? 1 : 3;
-      for (std::size_t i = 0; i < count; ++i)
+      const std::size_t count = edges[k] >= 0 ? 1 : 3;
+      for (std::size_t i = 0; i < count; ++i) {
         measured_.add(points[k][i].d, global(points[k][i].point));
+      }
       added_ += count;
     }
     return children;
