@@ -26,22 +26,7 @@ struct DecimationMesh : TriMesh {
     if (status(v0).deleted() || status(v1).deleted()) return false;
 
     VertexHandle vl, vr;
-    if (!is_boundary(v0v1)) {
-      const HalfedgeHandle h1 = next_halfedge_handle(v0v1);
-      const HalfedgeHandle h2 = next_halfedge_handle(h1);
-      vl = to_vertex_handle(h1);
-      if (is_boundary(opposite_halfedge_handle(h1)) && is_boundary(opposite_halfedge_handle(h2))) {
-        return false;
-      }
-    }
-    if (!is_boundary(v1v0)) {
-      const HalfedgeHandle h1 = next_halfedge_handle(v1v0);
-      const HalfedgeHandle h2 = next_halfedge_handle(h1);
-      vr = to_vertex_handle(h1);
-      if (is_boundary(opposite_halfedge_handle(h1)) && is_boundary(opposite_halfedge_handle(h2))) {
-        return false;
-      }
-    }
+    if (!far_corner(v0v1, vl) || !far_corner(v1v0, vr)) return false;
     if (vl == vr) return false;  // equal, or no face on either side
 
     for (const VertexHandle v : vv_range(v0)) status(v).set_tagged(false);
@@ -50,6 +35,18 @@ struct DecimationMesh : TriMesh {
       if (status(v).tagged() && v != vl && v != vr) return false;
     }
     return !(is_boundary(v0) && is_boundary(v1) && !is_boundary(v0v1) && !is_boundary(v1v0));
+  }
+
+ private:
+  // The far corner of the face on h's side, into `far` (left invalid on the boundary); false
+  // when that face's two other edges both lie on the boundary.
+  bool far_corner(HalfedgeHandle h, VertexHandle& far) {
+    if (is_boundary(h)) return true;
+    const HalfedgeHandle h1 = next_halfedge_handle(h);
+    const HalfedgeHandle h2 = next_halfedge_handle(h1);
+    far = to_vertex_handle(h1);
+    return !(is_boundary(opposite_halfedge_handle(h1)) &&
+             is_boundary(opposite_halfedge_handle(h2)));
   }
 };
 
