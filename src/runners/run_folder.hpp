@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -36,10 +37,13 @@ class RunFolder {
     OutputFile out(file.string(), kind);
     write_content(out);
     out.commit();
+    written(file);
+  }
+  // Remembers a file written by other means. Files may be written from several threads.
+  void written(const std::filesystem::path& file) {
+    const std::lock_guard<std::mutex> lock(written_mutex_);
     written_.push_back(file);
   }
-  // Remembers a file written by other means.
-  void written(const std::filesystem::path& file) { written_.push_back(file); }
   // The run succeeded: everything stays.
   void keep() { kept_ = true; }
 
@@ -47,6 +51,7 @@ class RunFolder {
   std::filesystem::path path_;
   std::vector<std::filesystem::path> made_;  // folders this run made, outermost first
   std::vector<std::filesystem::path> written_;
+  std::mutex written_mutex_;
   bool created_ = false;
   bool kept_ = false;
 };

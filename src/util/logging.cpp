@@ -8,7 +8,8 @@ namespace ncv {
 void setup_logging(Verbosity verbosity) {
   auto logger = spdlog::get("ncverify");
   if (!logger) {
-    logger = spdlog::stderr_logger_st("ncverify");
+    // Thread-safe: run makes its pictures side by side.
+    logger = spdlog::stderr_logger_mt("ncverify");
     logger->set_pattern("ncverify: %^%l%$: %v");
     spdlog::set_default_logger(logger);
   }
