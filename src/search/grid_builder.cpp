@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
@@ -55,6 +56,33 @@ Layout make_layout(const BoundingBox& part, double h, const std::array<double, 3
   return layout;
 }
 
+// The cells of the triangle's bounding box grown by the slack, per axis [lo, hi].
+struct CellSpan {
+  std::array<std::int64_t, 3> lo{}, hi{};
+  // How many cells the box spans: 1, 2 when it spans two along one axis and one along the
+  // others, 0 otherwise.
+  int cells_in_a_row() const {
+    int extra = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      const std::int64_t span = hi[axis] - lo[axis];
+      if (span > 1) return 0;
+      extra += static_cast<int>(span);
+    }
+    return extra <= 1 ? 1 + extra : 0;
+  }
+};
+
+CellSpan cell_span(const Layout& layout, const TriangleCorners& t) {
+  CellSpan span;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double low = std::min({t[0][axis], t[1][axis], t[2][axis]});
+    const double high = std::max({t[0][axis], t[1][axis], t[2][axis]});
+    span.lo[axis] = layout.clamped_index(axis, low - layout.slack);
+    span.hi[axis] = layout.clamped_index(axis, high + layout.slack);
+  }
+  return span;
+}
+
 // The candidate cells of one triangle: per column along the dominant axis k of its normal,
 // the cells within the plane's span over the (grown) column, widened by the plane's
 // possible direction error (relative 1e-4 of the triangle's size; is_degenerate_triangle
@@ -62,13 +90,10 @@ Layout make_layout(const BoundingBox& part, double h, const std::array<double, 3
 // cell of their bounding box.
 class Candidates {
  public:
-  Candidates(const Layout& layout, const TriangleCorners& t) : layout_(layout) {
+  Candidates(const Layout& layout, const TriangleCorners& t, const CellSpan& span)
+      : layout_(layout), lo_(span.lo), hi_(span.hi) {
     BoundingBox box;
     for (const Vec3& corner : t) box.extend(corner);
-    for (int axis = 0; axis < 3; ++axis) {
-      lo_[axis] = layout.clamped_index(axis, box.min[axis] - layout.slack);
-      hi_[axis] = layout.clamped_index(axis, box.max[axis] + layout.slack);
-    }
     normal_ = cross(t[1] - t[0], t[2] - t[0]);
     planar_ = !is_degenerate_triangle(t[0], t[1], t[2]);
     const Vec3 magnitude{std::fabs(normal_[0]), std::fabs(normal_[1]), std::fabs(normal_[2])};
@@ -92,19 +117,6 @@ class Candidates {
         for (c[k_] = first; c[k_] <= last; ++c[k_]) visit(c[0], c[1], c[2]);
       }
     }
-  }
-
-  std::uint64_t count() const {
-    const int a = (k_ + 1) % 3;
-    const int b = (k_ + 2) % 3;
-    std::uint64_t total = 0;
-    for (std::int64_t ia = lo_[a]; ia <= hi_[a]; ++ia) {
-      for (std::int64_t ib = lo_[b]; ib <= hi_[b]; ++ib) {
-        const auto [first, last] = column(ia, ib);
-        if (last >= first) total += static_cast<std::uint64_t>(last - first + 1);
-      }
-    }
-    return total;
   }
 
  private:
@@ -136,11 +148,24 @@ class Candidates {
   bool planar_ = true;
 };
 
-// Calls visit(cell) for every cell the triangle touches, in candidate order.
+// Calls visit(cell) for every cell the triangle touches and returns how many candidates it
+// counted. Where the grown box spans one cell, or two along one axis, the exact test would
+// accept each of them (the corner with the least coordinate along that axis lies in the
+// first grown cell, the one with the greatest in the second, by more than the rounding the
+// slack covers), so they are taken without it: 56-89 % of the triangles of the bench's
+// workpieces and nominals, both families (docs/PERFORMANCE.md).
 template <class Visit>
-void for_each_touched_cell(const Layout& layout, const TriangleCorners& t, Visit&& visit) {
+std::uint64_t for_each_touched_cell(const Layout& layout, const TriangleCorners& t, Visit&& visit) {
+  const CellSpan span = cell_span(layout, t);
+  if (const int cells = span.cells_in_a_row()) {
+    visit(layout.cell(span.lo[0], span.lo[1], span.lo[2]));
+    if (cells == 2) visit(layout.cell(span.hi[0], span.hi[1], span.hi[2]));
+    return static_cast<std::uint64_t>(cells);
+  }
   const double half = 0.5 * layout.h + layout.slack;
-  Candidates(layout, t).for_each([&](std::int64_t i, std::int64_t j, std::int64_t k) {
+  std::uint64_t candidates = 0;
+  Candidates(layout, t, span).for_each([&](std::int64_t i, std::int64_t j, std::int64_t k) {
+    ++candidates;
     const Vec3 centre{layout.origin[0] + (static_cast<double>(i) + 0.5) * layout.h,
                       layout.origin[1] + (static_cast<double>(j) + 0.5) * layout.h,
                       layout.origin[2] + (static_cast<double>(k) + 0.5) * layout.h};
@@ -148,46 +173,17 @@ void for_each_touched_cell(const Layout& layout, const TriangleCorners& t, Visit
       visit(layout.cell(i, j, k));
     }
   });
+  return candidates;
 }
 
-// Whether the candidate cells of all triangles stay within the budget; stops counting once
-// they do not (the verdict does not depend on which thread saw the excess first).
-bool candidates_within(const ReferenceSurface& nominal, const Layout& layout,
-                       std::uint64_t budget) {
-  std::atomic<std::uint64_t> total{0};
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nominal.triangle_count(), 256),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      if (total.load(std::memory_order_relaxed) > budget) return;
-                      std::uint64_t part = 0;
-                      for (std::size_t t = range.begin(); t != range.end(); ++t) {
-                        part += Candidates(layout, nominal.corners(t)).count();
-                      }
-                      total.fetch_add(part, std::memory_order_relaxed);
-                    });
-  return total.load() <= budget;
-}
-
-Layout choose_layout(const ReferenceSurface& nominal, double h, GridStatistics& stats) {
-  const auto triangles = static_cast<std::uint64_t>(nominal.triangle_count());
-  const double cell_budget =
-      static_cast<double>(std::max(kCellsPerTriangle * triangles, kMinCellBudget));
-  const std::uint64_t reference_budget =
-      std::max(kReferencesPerTriangle * triangles, kMinReferenceBudget);
-  const BoundingBox& part = nominal.local_bounds();
-  // No axis can ever use more than 2^31 cells (the cell budget is below that), so a cell
-  // smaller than the part's extent / 2^31 grows at once: the cell counts below stay finite.
-  const Vec3 extent = part.extent();
-  h = std::max(h, std::max({extent[0], extent[1], extent[2]}) * 0x1p-31);
+// The cell size grown until the cells fit their budget.
+Layout layout_within_cell_budget(const BoundingBox& part, double& h, double cell_budget,
+                                 GridStatistics& stats) {
   for (;; ++stats.growth_steps) {
     const std::array<double, 3> n = cells_per_axis(part, h);
     const double cells = n[0] * n[1] * n[2];
-    if (cells > cell_budget) {
-      h *= std::max(kGrowth, std::cbrt(cells / cell_budget));
-      continue;
-    }
-    const Layout layout = make_layout(part, h, n);
-    if (candidates_within(nominal, layout, reference_budget)) return layout;
-    h *= kGrowth;
+    if (cells <= cell_budget) return make_layout(part, h, n);
+    h *= std::max(kGrowth, std::cbrt(cells / cell_budget));
   }
 }
 
@@ -201,22 +197,34 @@ struct ReferenceChunk {
 
 constexpr std::size_t kChunkTriangles = 4096;
 
-std::vector<ReferenceChunk> touched_cells(const ReferenceSurface& nominal, const Layout& layout) {
+// The chunks, or nothing when the triangles have more than `budget` candidates in all. A
+// chunk stops (and none starts) once the candidates it counted and those the others added
+// exceed the budget, and adds its count when it ends: a part of the total beyond the budget
+// means the total is, so the answer depends on the total alone, not on the threads. The
+// references held meanwhile stay within the budget but for one triangle's per thread.
+std::optional<std::vector<ReferenceChunk>> touched_cells(const ReferenceSurface& nominal,
+                                                         const Layout& layout,
+                                                         std::uint64_t budget) {
   const std::size_t triangles = nominal.triangle_count();
   std::vector<ReferenceChunk> chunks((triangles + kChunkTriangles - 1) / kChunkTriangles);
+  std::atomic<std::uint64_t> candidates{0};
   tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
     ReferenceChunk& chunk = chunks[c];
     const std::size_t end = std::min(triangles, (c + 1) * kChunkTriangles);
     chunk.counts.reserve(end - c * kChunkTriangles);
+    std::uint64_t tested = 0;
     for (std::size_t t = c * kChunkTriangles; t < end; ++t) {
+      if (tested + candidates.load(std::memory_order_relaxed) > budget) break;
       const std::size_t before = chunk.cells.size();
-      for_each_touched_cell(layout, nominal.corners(t), [&](std::uint64_t cell) {
+      tested += for_each_touched_cell(layout, nominal.corners(t), [&](std::uint64_t cell) {
         chunk.cells.push_back(static_cast<std::uint32_t>(cell));
       });
       chunk.counts.push_back(static_cast<std::uint32_t>(chunk.cells.size() - before));
     }
     chunk.cells.shrink_to_fit();
+    candidates.fetch_add(tested, std::memory_order_relaxed);
   });
+  if (candidates.load() > budget) return std::nullopt;
   return chunks;
 }
 
@@ -280,16 +288,31 @@ BackgroundGrid build_background_grid(const ReferenceSurface& nominal, const Grid
   GridStatistics stats;
   stats.requested_cell_size =
       options.cell_size > 0 ? options.cell_size : default_cell_size(nominal);
-  const Layout layout = choose_layout(nominal, stats.requested_cell_size, stats);
-
-  BackgroundGrid grid;
-  grid.origin = layout.origin;
-  grid.cell_size = layout.h;
-  grid.dims = layout.dims;
-  fill_cell_lists(grid, touched_cells(nominal, layout));
-  summarise(grid, nominal.triangle_count(), stats);
-  if (statistics) *statistics = stats;
-  return grid;
+  const auto triangles = static_cast<std::uint64_t>(nominal.triangle_count());
+  const double cell_budget =
+      static_cast<double>(std::max(kCellsPerTriangle * triangles, kMinCellBudget));
+  const std::uint64_t reference_budget =
+      std::max(kReferencesPerTriangle * triangles, kMinReferenceBudget);
+  const BoundingBox& part = nominal.local_bounds();
+  // No axis can ever use more than 2^31 cells (the cell budget is below that), so a cell
+  // smaller than the part's extent / 2^31 grows at once: the cell counts stay finite.
+  const Vec3 extent = part.extent();
+  double h =
+      std::max(stats.requested_cell_size, std::max({extent[0], extent[1], extent[2]}) * 0x1p-31);
+  for (;; ++stats.growth_steps, h *= kGrowth) {
+    const Layout layout = layout_within_cell_budget(part, h, cell_budget, stats);
+    std::optional<std::vector<ReferenceChunk>> chunks =
+        touched_cells(nominal, layout, reference_budget);
+    if (!chunks) continue;
+    BackgroundGrid grid;
+    grid.origin = layout.origin;
+    grid.cell_size = layout.h;
+    grid.dims = layout.dims;
+    fill_cell_lists(grid, *chunks);
+    summarise(grid, nominal.triangle_count(), stats);
+    if (statistics) *statistics = stats;
+    return grid;
+  }
 }
 
 }  // namespace ncv

@@ -15,11 +15,12 @@
 //   references <= max(kReferencesPerTriangle * T, kMinReferenceBudget)
 // (a reference is one triangle listed in one cell). While the cell size breaks either
 // bound it grows by kGrowth (by the cube root of the cell excess when that is larger).
-// References are bounded before any list is built, by counting candidate cells: those of
-// the triangle's bounding box that lie within a few cells of its plane in each column
-// along the plane's dominant normal axis (the whole box for a degenerate triangle). The
-// exact test only removes candidates, so the bound is strict, and building costs at most
-// two exact tests per allowed reference. The grid then never takes more than
+// References are bounded by counting candidate cells while they are found: those of the
+// triangle's bounding box that lie within a few cells of its plane in each column along the
+// plane's dominant normal axis (the whole box for a degenerate triangle), and one or two
+// cells, untested, where the box spans no more (grid_builder.cpp). The exact test only
+// removes candidates, so the bound is strict; an attempt stops as soon as the candidates
+// counted exceed the budget, and the cell then grows. The grid then never takes more than
 // 8 * 4 T + 4 * 16 T = 96 bytes per triangle (offsets of 8 bytes, references of 4), and
 // the build at most 100 bytes per triangle more while it runs (the references once more, in
 // per-chunk vectors trimmed when done, a count per triangle and a cursor per cell), plus
