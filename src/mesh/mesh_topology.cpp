@@ -1,11 +1,11 @@
 #include "mesh/mesh_topology.hpp"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 
 #include "util/ordered_reduce.hpp"
 
@@ -146,17 +146,48 @@ std::uint64_t count_degenerate(const Mesh& mesh) {
       [](std::uint64_t& acc, std::uint64_t part) { acc += part; });
 }
 
-std::uint64_t count_duplicates(const Mesh& mesh) {
-  std::vector<Triangle> sorted(mesh.triangles);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sorted.size(), 1 << 14),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t t = range.begin(); t != range.end(); ++t) {
-                        std::sort(sorted[t].begin(), sorted[t].end());
-                      }
-                    });
-  tbb::parallel_sort(sorted.begin(), sorted.end());  // equal triangles end up adjacent either way
-  std::uint64_t duplicates = 0;
-  for (std::size_t i = 1; i < sorted.size(); ++i) duplicates += sorted[i] == sorted[i - 1];
+std::array<std::uint32_t, 3> sorted_corners(const Triangle& t) {
+  std::array<std::uint32_t, 3> v = t;
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+// Triangles with the same three vertices as an earlier one. Two such triangles without a
+// repeated corner share all three edges, so they meet in the slot list of the edge between
+// their two lowest vertices: there, each slot that is its triangle's lowest edge counts when
+// an earlier such slot has the same third vertex (a few slots an edge; sorting every
+// triangle instead made the 1.25 M-triangle workpiece's topology 0.17 s, not 0.14, on 2
+// threads).
+// The rare triangles with a repeated corner, which have no edges, are sorted apart.
+std::uint64_t count_duplicates(const Mesh& mesh, const EdgeIncidence& incidence) {
+  const std::uint64_t with_edges = ordered_reduce(
+      incidence.edge_count(), kCountBlock, std::uint64_t{0},
+      [&](std::size_t begin, std::size_t end) {
+        std::uint64_t part = 0;
+        std::vector<std::uint32_t> third;  // of the slots that are their triangle's lowest edge
+        for (std::size_t e = begin; e < end; ++e) {
+          if (incidence.slot_count(e) < 2) continue;
+          third.clear();
+          for (std::uint32_t i = incidence.edge_begin[e]; i < incidence.edge_begin[e + 1]; ++i) {
+            const std::uint32_t slot = incidence.slots[i];
+            const std::array<std::uint32_t, 3> v = sorted_corners(mesh.triangles[slot / 3]);
+            if (slot_low(mesh, slot) == v[0] && slot_high(mesh, slot) == v[1]) {
+              third.push_back(v[2]);
+            }
+          }
+          std::sort(third.begin(), third.end());
+          for (std::size_t i = 1; i < third.size(); ++i) part += third[i] == third[i - 1];
+        }
+        return part;
+      },
+      [](std::uint64_t& acc, std::uint64_t part) { acc += part; });
+  std::vector<std::array<std::uint32_t, 3>> repeating;
+  for (const Triangle& t : mesh.triangles) {
+    if (repeats_vertex(t)) repeating.push_back(sorted_corners(t));
+  }
+  std::sort(repeating.begin(), repeating.end());
+  std::uint64_t duplicates = with_edges;
+  for (std::size_t i = 1; i < repeating.size(); ++i) duplicates += repeating[i] == repeating[i - 1];
   return duplicates;
 }
 
@@ -231,7 +262,7 @@ TopologyReport analyse_topology(const Mesh& mesh, const EdgeIncidence& incidence
   count_edge_kinds(mesh, incidence, report);
   report.non_manifold_vertices = count_non_manifold_vertices(mesh, incidence);
   report.degenerate_triangles = count_degenerate(mesh);
-  report.duplicate_triangles = count_duplicates(mesh);
+  report.duplicate_triangles = count_duplicates(mesh, incidence);
   report.signed_volume = signed_volume(mesh);
   return report;
 }

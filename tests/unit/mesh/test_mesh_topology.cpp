@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <utility>
+#include <vector>
 
 #include <tbb/global_control.h>
 
@@ -221,6 +222,27 @@ TEST_CASE("edge incidence: edges numbered by (lower, higher) vertex, on any thre
   const std::size_t last = mesh.triangles.size() - 1;
   for (std::size_t k = 0; k < 3; ++k) CHECK(two.edge_of_slot[3 * last + k] == ncv::kNoEdge);
   CHECK(two.edge_begin.back() == two.slots.size());
+}
+
+TEST_CASE("duplicate triangles counted as sorting every triangle would", "[topology]") {
+  ncv::Mesh mesh = defective_torus();
+  // Three copies of one triangle in other corner orders, and repeated-corner triangles twice.
+  const ncv::Triangle t = mesh.triangles[12345];
+  mesh.triangles.push_back({t[2], t[0], t[1]});
+  mesh.triangles.push_back({t[1], t[0], t[2]});
+  mesh.triangles.push_back({8, 7, 7});
+  mesh.triangles.push_back({9, 9, 9});
+  mesh.triangles.push_back({9, 9, 9});
+  // Many triangles on one edge (a fan), two of them the same.
+  for (std::uint32_t v = 100; v < 140; ++v) mesh.triangles.push_back({0, 1, v});
+  mesh.triangles.push_back({1, 120, 0});
+  std::vector<ncv::Triangle> sorted = mesh.triangles;
+  for (ncv::Triangle& s : sorted) std::sort(s.begin(), s.end());
+  std::sort(sorted.begin(), sorted.end());
+  std::uint64_t expected = 0;
+  for (std::size_t i = 1; i < sorted.size(); ++i) expected += sorted[i] == sorted[i - 1];
+  CHECK(expected > 70);
+  CHECK(analyse(mesh).duplicate_triangles == expected);
 }
 
 TEST_CASE("degenerate triangle predicate", "[topology]") {
