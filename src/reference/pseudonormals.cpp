@@ -137,35 +137,41 @@ Pseudonormals halfedge_pseudonormals(const TriMesh& mesh, const EdgeIncidence& i
   return normals;
 }
 
-// Face normals and corner angles in parallel; the angle-weighted sums stay serial, in
-// triangle order, so they do not depend on the thread count. The angles are kept rather
-// than their products with the normal: a third of the memory to write and read.
+// Face normals and corner angles in parallel; the vertices' angle-weighted sums stay serial,
+// in triangle order, so they do not depend on the thread count. The angles are kept rather
+// than their products with the normal: a third of the memory to write and read. An edge's
+// sum runs over its slots, which ascend, and so do their triangles: the triangle order
+// again, edge by edge in parallel (with the edges in the serial loop, the normals of the
+// 1.25 M-triangle finishing workpiece took 0.15-0.17 s on 2 threads, now 0.13-0.16 s).
 Pseudonormals array_pseudonormals(const Mesh& mesh, std::span<const TriangleCorners> corners,
-                                  const EdgeIncidence& incidence) {
+                                  EdgeIncidence incidence) {
   Pseudonormals normals;
   const std::size_t triangles = mesh.triangle_count();
   normals.face = face_normals(corners);
-  normals.vertex.assign(mesh.vertex_count(), Vec3(0, 0, 0));
-  normals.edge.assign(incidence.edge_count(), Vec3(0, 0, 0));
-  normals.edge_of_slot = incidence.edge_of_slot;
   Buffer<std::array<double, 3>> corner_angles(triangles);
   parallel_over(triangles, 1 << 12, [&](std::size_t t) {
     if (is_zero(normals.face[t])) return;
     const auto& [a, b, c] = corners[t];
     corner_angles[t] = {corner_angle(a, b, c), corner_angle(b, c, a), corner_angle(c, a, b)};
   });
+  normals.vertex.assign(mesh.vertex_count(), Vec3(0, 0, 0));
   for (std::size_t t = 0; t < triangles; ++t) {
     const Vec3 n = normals.face[t];
     if (is_zero(n)) continue;
     const Triangle& tri = mesh.triangles[t];
     for (int k = 0; k < 3; ++k) normals.vertex[tri[k]] += corner_angles[t][k] * n;
-    for (std::size_t k = 0; k < 3; ++k) {
-      const std::uint32_t edge = normals.edge_of_slot[3 * t + k];
-      if (edge != kNoEdge) normals.edge[edge] += n;
-    }
   }
   normalize_all(normals.vertex);
-  normalize_all(normals.edge);
+  normals.edge.resize(incidence.edge_count());
+  parallel_over(incidence.edge_count(), 1 << 14, [&](std::size_t e) {
+    Vec3 sum(0, 0, 0);
+    for (std::uint32_t i = incidence.edge_begin[e]; i < incidence.edge_begin[e + 1]; ++i) {
+      const Vec3 n = normals.face[incidence.slots[i] / 3];
+      if (!is_zero(n)) sum += n;
+    }
+    normals.edge[e] = normalized(sum);
+  });
+  normals.edge_of_slot = std::move(incidence.edge_of_slot);
   return normals;
 }
 

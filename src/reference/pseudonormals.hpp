@@ -39,8 +39,9 @@ Buffer<Vec3> face_normals(std::span<const TriangleCorners> corners);
 // On the halfedge structure built by halfedge_mesh from `incidence`.
 Pseudonormals halfedge_pseudonormals(const TriMesh& mesh, const EdgeIncidence& incidence);
 
-// On the arrays: `corners` are `mesh`'s triangles' corners, `incidence` its edge incidence.
+// On the arrays: `corners` are `mesh`'s triangles' corners, `incidence` its edge incidence
+// (its edge_of_slot becomes the result's).
 Pseudonormals array_pseudonormals(const Mesh& mesh, std::span<const TriangleCorners> corners,
-                                  const EdgeIncidence& incidence);
+                                  EdgeIncidence incidence);
 
 }  // namespace ncv

@@ -127,7 +127,7 @@ ReferenceSurface::ReferenceSurface(Mesh mesh, const std::string& source, StoredS
 // checks it).
 void ReferenceSurface::compute_normals(EdgeIncidence& incidence, SurfaceHolding holding) {
   if (holding == SurfaceHolding::arrays || !holds_as_halfedge_mesh(local_, topology_)) {
-    normals_ = array_pseudonormals(local_, corners_, incidence);
+    normals_ = array_pseudonormals(local_, corners_, std::move(incidence));
     return;
   }
   const TriMesh halfedges = halfedge_mesh(local_, incidence);
