@@ -229,26 +229,31 @@ std::optional<std::vector<ReferenceChunk>> touched_cells(const ReferenceSurface&
 }
 
 // Counting sort of the references by cell; scanning triangles in order keeps every cell's
-// list ascending.
+// list ascending. The offsets serve as the cursors (each ends where the next cell starts,
+// so one shift restores them): no second array of a cell's size.
 void fill_cell_lists(BackgroundGrid& grid, const std::vector<ReferenceChunk>& chunks) {
-  grid.cell_offsets.assign(grid.cell_count() + 1, 0);
+  std::vector<std::uint64_t>& offsets = grid.cell_offsets;
+  offsets.assign(grid.cell_count() + 1, 0);
   std::uint64_t references = 0;
   for (const ReferenceChunk& chunk : chunks) {
-    for (std::uint32_t cell : chunk.cells) ++grid.cell_offsets[cell + 1];
+    for (std::uint32_t cell : chunk.cells) ++offsets[cell];
     references += chunk.cells.size();
   }
-  std::partial_sum(grid.cell_offsets.begin(), grid.cell_offsets.end(), grid.cell_offsets.begin());
-  std::vector<std::uint64_t> cursor(grid.cell_offsets.begin(), grid.cell_offsets.end() - 1);
+  // offsets[c]: where cell c's list starts.
+  std::exclusive_scan(offsets.begin(), offsets.end(), offsets.begin(), std::uint64_t{0});
   grid.cell_triangles.resize(references);
   std::uint32_t t = 0;
   for (const ReferenceChunk& chunk : chunks) {
     std::size_t r = 0;
     for (std::uint32_t count : chunk.counts) {
       for (std::uint32_t k = 0; k < count; ++k, ++r)
-        grid.cell_triangles[cursor[chunk.cells[r]]++] = t;
+        grid.cell_triangles[offsets[chunk.cells[r]]++] = t;
       ++t;
     }
   }
+  // Each cursor now stands at its list's end, the next list's start.
+  std::copy_backward(offsets.begin(), offsets.end() - 1, offsets.end());
+  offsets[0] = 0;
 }
 
 void summarise(const BackgroundGrid& grid, std::size_t triangles, GridStatistics& stats) {
