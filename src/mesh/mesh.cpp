@@ -4,9 +4,11 @@
 #include <xxhash.h>
 
 #include <limits>
+#include <span>
 
 #include "geometry/coordinate_limit.hpp"
 #include "util/error.hpp"
+#include "util/ordered_reduce.hpp"
 
 namespace ncv {
 
@@ -25,8 +27,17 @@ double surface_area(const Mesh& mesh) {
   return area;
 }
 
+// In blocks side by side, combined in block order: the box of a serial loop, to the sign of
+// a zero (std::min keeps the first of equal values). A run asks for the workpiece's box
+// about ten times, 2.5 ms each for 625 k vertices on one thread.
 BoundingBox bounding_box(const Mesh& mesh) {
-  return BoundingBox::of(mesh.vertices);
+  const std::span<const Vec3> points = mesh.vertices;
+  return ordered_reduce(
+      points.size(), std::size_t{1} << 16, BoundingBox{},
+      [&](std::size_t begin, std::size_t end) {
+        return BoundingBox::of(points.subspan(begin, end - begin));
+      },
+      [](BoundingBox& box, const BoundingBox& part) { box.extend(part); });
 }
 
 std::uint64_t mesh_hash(const Mesh& mesh) {

@@ -333,6 +333,8 @@ PartReport make_part_report(const DistanceSet& distances, const std::optional<To
                                      : distances.reference.source;
   report.part = std::filesystem::path(workpiece).stem().string();
   report.distances = &distances;
+  // Measured once: the numbers of every report, picture and page are rounded by it.
+  report.surface_box = bounding_box(distances.samples.mesh);
   // The measures and the regions read the same distances and nothing of each other: they
   // run side by side, so that the regions' serial union-find overlaps the measures' passes.
   RegionMap regions;
@@ -352,7 +354,7 @@ PartReport make_part_report(const DistanceSet& distances, const std::optional<To
 }
 
 NumberStyle report_number_style(const PartReport& report) {
-  return number_style(bounding_box(report.distances->samples.mesh), report.units);
+  return number_style(report.surface_box, report.units);
 }
 
 std::optional<Verdict> PartReport::verdict() const {

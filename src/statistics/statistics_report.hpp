@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "files/distance_file.hpp"
+#include "geometry/bounding_box.hpp"
 #include "statistics/error_regions.hpp"
 #include "statistics/error_statistics.hpp"
 #include "statistics/readable_numbers.hpp"
@@ -29,6 +30,7 @@ struct PartReport {
   std::vector<std::uint32_t> sample_region;  // per sample (RegionMap); empty without one
   std::size_t listed_regions = 20;           // regions written out (all are counted)
   std::string units = "mm";                  // of lengths; areas are in units²
+  BoundingBox surface_box;  // of the sampled surface, whose size sets the numbers' rounding
 
   // The verdict against the tolerance (statistics/verdict.hpp); none without a tolerance.
   std::optional<Verdict> verdict() const;
