@@ -53,23 +53,27 @@ std::vector<std::uint32_t> number_vertex_samples(SampleSet& set) {
   return owner_of_vertex;
 }
 
-// The vertex samples the set holds, at their lattice corner of their owning triangle.
+// The vertex samples the set holds, at their lattice corner of their owning triangle; each
+// vertex writes its own sample, so in parallel.
 void fill_vertex_samples(SampleSet& set, const std::vector<std::uint32_t>& owner_of_vertex) {
   const Mesh& mesh = set.mesh;
   const std::uint64_t end = set.first_sample + set.sample_count();
-  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
-    const std::uint64_t s = set.vertex_sample[v];
-    if (set.vertex_sample[v] == kNoSample || s < set.first_sample || s >= end) continue;
-    const std::uint32_t t = owner_of_vertex[v];
-    const auto& corners = mesh.triangles[t];
-    const int corner = corners[0] == v ? 0 : corners[1] == v ? 1 : 2;  // the first that is v
-    const auto [i, j] = corner_lattice_coordinates(corner, set.lattice_sizes[t]);
-    const std::uint64_t k = s - set.first_sample;
-    set.positions[k] = mesh.vertices[v];
-    set.owner[k] = t;
-    set.lattice_i[k] = i;
-    set.lattice_j[k] = j;
-  }
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, mesh.vertex_count(), 1 << 14), [&](const auto& r) {
+        for (std::size_t v = r.begin(); v != r.end(); ++v) {
+          const std::uint64_t s = set.vertex_sample[v];
+          if (s == kNoSample || s < set.first_sample || s >= end) continue;
+          const std::uint32_t t = owner_of_vertex[v];
+          const auto& corners = mesh.triangles[t];
+          const int corner = corners[0] == v ? 0 : corners[1] == v ? 1 : 2;  // the first that is v
+          const auto [i, j] = corner_lattice_coordinates(corner, set.lattice_sizes[t]);
+          const std::uint64_t k = s - set.first_sample;
+          set.positions[k] = mesh.vertices[v];
+          set.owner[k] = t;
+          set.lattice_i[k] = i;
+          set.lattice_j[k] = j;
+        }
+      });
 }
 
 bool is_corner(std::uint32_t i, std::uint32_t j, std::uint32_t n) {
