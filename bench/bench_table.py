@@ -124,7 +124,7 @@ def step_by_step(threads=2):
 def summarise(runs):
     """Median phase times and total, the largest peak memory, the first run's report."""
     t = dict(runs[0][0])
-    # Every phase the runs logged: PHASES, and a two-sided run's "reverse ..." ones and "html".
+    # Every phase the runs logged: PHASES and a two-sided run's "reverse ..." ones.
     t["phases"] = {p: statistics.median(r[0]["phases"].get(p, 0.0) for r in runs)
                    for p in runs[0][0]["phases"]}
     t["total"] = statistics.median(r[0]["total"] for r in runs)
