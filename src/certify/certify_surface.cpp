@@ -5,11 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <optional>
 #include <vector>
-#include "util/stopwatch.hpp"
 
 #include "certify/patch_bounds.hpp"
 #include "certify/triangle_cover.hpp"
