@@ -56,8 +56,9 @@ Layout make_layout(const BoundingBox& part, double h, const std::array<double, 3
   return layout;
 }
 
-// The cells of the triangle's bounding box grown by the slack, per axis [lo, hi].
+// The triangle's bounding box, and the cells of it grown by the slack, per axis [lo, hi].
 struct CellSpan {
+  BoundingBox box;
   std::array<std::int64_t, 3> lo{}, hi{};
   // How many cells the box spans: 1, 2 when it spans two along one axis and one along the
   // others, 0 otherwise.
@@ -74,11 +75,10 @@ struct CellSpan {
 
 CellSpan cell_span(const Layout& layout, const TriangleCorners& t) {
   CellSpan span;
+  for (const Vec3& corner : t) span.box.extend(corner);
   for (int axis = 0; axis < 3; ++axis) {
-    const double low = std::min({t[0][axis], t[1][axis], t[2][axis]});
-    const double high = std::max({t[0][axis], t[1][axis], t[2][axis]});
-    span.lo[axis] = layout.clamped_index(axis, low - layout.slack);
-    span.hi[axis] = layout.clamped_index(axis, high + layout.slack);
+    span.lo[axis] = layout.clamped_index(axis, span.box.min[axis] - layout.slack);
+    span.hi[axis] = layout.clamped_index(axis, span.box.max[axis] + layout.slack);
   }
   return span;
 }
@@ -92,8 +92,6 @@ class Candidates {
  public:
   Candidates(const Layout& layout, const TriangleCorners& t, const CellSpan& span)
       : layout_(layout), lo_(span.lo), hi_(span.hi) {
-    BoundingBox box;
-    for (const Vec3& corner : t) box.extend(corner);
     normal_ = cross(t[1] - t[0], t[2] - t[0]);
     planar_ = !is_degenerate_triangle(t[0], t[1], t[2]);
     const Vec3 magnitude{std::fabs(normal_[0]), std::fabs(normal_[1]), std::fabs(normal_[2])};
@@ -101,7 +99,7 @@ class Candidates {
              ? 0
              : (magnitude[1] >= magnitude[2] ? 1 : 2);
     offset_ = dot(normal_, t[0]);
-    const Vec3 extent = box.extent();
+    const Vec3 extent = span.box.extent();
     pad_ = 1e-4 * std::max({extent[0], extent[1], extent[2]}) + 2 * layout.slack;
   }
 

@@ -23,11 +23,11 @@
 // counted exceed the budget, and the cell then grows. The grid then never takes more than
 // 8 * 4 T + 4 * 16 T = 96 bytes per triangle (offsets of 8 bytes, references of 4), and
 // the build at most 100 bytes per triangle more while it runs (the references once more, in
-// per-chunk vectors trimmed when done, a count per triangle and a cursor per cell), plus
+// per-chunk vectors trimmed when done, and a count per triangle), plus
 // one growing chunk of 4096 triangles per thread. Four cells per triangle, not more: the
 // search costs the same per query over a wide range of cell sizes (0.2 to 1.0 mm measured
 // on a 1.6 M-triangle nominal whose default cell is 0.2 mm), while offsets cost 8 bytes a
-// cell in memory, in the grid file and in the time to write it. One exact test per
+// cell in memory, in the grid file and in the time to write it. At most one exact test per
 // candidate cell. The same bounds apply to a cell size given as an option; GridStatistics
 // says when it grew.
 //
