@@ -23,6 +23,8 @@ class VertexWelder {
 
  private:
   std::uint32_t weld(Vec3 p, std::size_t hash);  // hash = hash_bits of p's coordinates
+  // p as vertex number vertices_.size(), in the empty slot its probe ended at.
+  std::uint32_t insert(Vec3 p, const std::array<std::uint64_t, 3>& bits, std::size_t slot);
   void grow();
 
   std::vector<std::array<std::uint64_t, 3>> keys_;
