@@ -24,6 +24,7 @@ namespace {
 // coordinates, and splitting says no more.
 constexpr std::uint32_t kMaxDepth = 60;
 constexpr std::size_t kTriangleBlock = 1024;
+constexpr std::size_t kCoveredBlock = 1 << 16;
 // Open patches a sampled triangle must have before they are bounded once for all of them
 // (TriangleCover): fewer cost less one by one.
 constexpr std::size_t kLeastPatchesPerCover = 8;
@@ -149,21 +150,32 @@ class Certifier {
     return {measured_.max + width_, measured_.min - width_, width_};
   }
 
-  // The sampled triangles whose anchor sample this set holds.
+  // The sampled triangles whose anchor sample this set holds, found block by block in
+  // parallel and joined in order (one loop appending to a growing list took 12 ms of the
+  // finishing job's 0.11 s certification).
   void find_covered_triangles() {
     const Mesh& mesh = samples_.mesh;
     const bool whole = samples_.whole();  // every anchor held: no sample to look up
-    for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    const auto covers = [&](std::size_t t) {
       const std::uint32_t n = samples_.lattice_sizes[t];
-      if (n < 2) continue;
-      if (whole) {
-        covered_.push_back(static_cast<std::uint32_t>(t));
-        continue;
-      }
+      if (n < 2) return false;
+      if (whole) return true;
       const std::uint64_t anchor =
           n >= 3 ? samples_.first_interior_sample[t] : samples_.vertex_sample[mesh.triangles[t][0]];
-      if (is_held(anchor)) covered_.push_back(static_cast<std::uint32_t>(t));
-    }
+      return is_held(anchor);
+    };
+    const std::size_t blocks = (mesh.triangle_count() + kCoveredBlock - 1) / kCoveredBlock;
+    std::vector<std::vector<std::uint32_t>> parts(blocks);
+    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+      const std::size_t end = std::min(mesh.triangle_count(), (b + 1) * kCoveredBlock);
+      for (std::size_t t = b * kCoveredBlock; t < end; ++t) {
+        if (covers(t)) parts[b].push_back(static_cast<std::uint32_t>(t));
+      }
+    });
+    std::size_t total = 0;
+    for (const auto& part : parts) total += part.size();
+    covered_.reserve(total);
+    for (const auto& part : parts) covered_.insert(covered_.end(), part.begin(), part.end());
   }
 
   Vec3 sample_normal(std::size_t t, std::uint32_t i, std::uint32_t j) const {
@@ -252,6 +264,11 @@ class Certifier {
     const PatchCorner c = corner(s);
     return {c.d, c.face};
   }
+  // Its signed distance alone: what a whole triangle's bound reads for most of a surface, on
+  // the path every sampled triangle takes (inlined there; value() was not).
+  double distance_of(std::uint64_t s) const {
+    return is_held(s) ? raw_.distance[s - samples_.first_sample] : corner(s).d;
+  }
 
   struct CheapBounds {
     double largest = 0;        // the corners' largest |d|
@@ -292,14 +309,14 @@ class Certifier {
   // samples are its vertices'; the others follow one another from its first interior sample.
   std::pair<double, double> sample_extremes(std::uint32_t t) const {
     const Triangle& corners = samples_.mesh.triangles[t];
-    const double a = value(samples_.vertex_sample[corners[0]]).first;
-    const double b = value(samples_.vertex_sample[corners[1]]).first;
-    const double c = value(samples_.vertex_sample[corners[2]]).first;
+    const double a = distance_of(samples_.vertex_sample[corners[0]]);
+    const double b = distance_of(samples_.vertex_sample[corners[1]]);
+    const double c = distance_of(samples_.vertex_sample[corners[2]]);
     double high = std::max({a, b, c}), low = std::min({a, b, c});
     const std::uint64_t n = samples_.lattice_sizes[t];
     const std::uint64_t first = samples_.first_interior_sample[t];
     for (std::uint64_t s = first; s < first + n * (n + 1) / 2 - 3; ++s) {
-      const double d = value(s).first;
+      const double d = distance_of(s);
       high = std::max(high, d);
       low = std::min(low, d);
     }
