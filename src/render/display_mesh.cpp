@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <vector>
 
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include "sampling/lattice_triangles.hpp"
 
@@ -162,11 +164,17 @@ class VertexClusters {
     });
     std::size_t mask = 15;
     while (mask < 2 * count) mask = 2 * mask + 1;
+    // The multiplier spreads keys that differ in their low bits (neighbouring cells).
+    const auto home = [&](std::size_t v) {
+      return static_cast<std::size_t>((keys[v] * 0x9e3779b97f4a7c15ull) >> 24) & mask;
+    };
     std::vector<std::uint32_t> first(mask + 1, kNone);
     std::vector<std::uint32_t> rep(count);
+    // The table's slots are random accesses: each is requested kAhead vertices early.
+    constexpr std::size_t kAhead = 16;
     for (std::uint32_t v = 0; v < count; ++v) {
-      // The multiplier spreads keys that differ in their low bits (neighbouring cells).
-      std::size_t slot = static_cast<std::size_t>((keys[v] * 0x9e3779b97f4a7c15ull) >> 24) & mask;
+      if (v + kAhead < count) __builtin_prefetch(&first[home(v + kAhead)]);
+      std::size_t slot = home(v);
       while (first[slot] != kNone && keys[first[slot]] != keys[v]) slot = (slot + 1) & mask;
       if (first[slot] == kNone) first[slot] = v;
       rep[v] = first[slot];
@@ -198,12 +206,30 @@ class VertexClusters {
   double band_ = 0;
 };
 
+bool survives(const Triangle& t, const std::vector<std::uint32_t>& rep) {
+  const Triangle r{rep[t[0]], rep[t[1]], rep[t[2]]};
+  return r[0] != r[1] && r[1] != r[2] && r[2] != r[0];
+}
+
+// How many triangles survive the clustering: counted in parallel, as the search for the cell
+// size asks it at every step it tries (made only for the size chosen).
+std::size_t surviving_count(const Mesh& mesh, const std::vector<std::uint32_t>& rep) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, mesh.triangle_count(), 1 << 14), std::size_t{0},
+      [&](const tbb::blocked_range<std::size_t>& range, std::size_t count) {
+        for (std::size_t t = range.begin(); t != range.end(); ++t) {
+          count += survives(mesh.triangles[t], rep) ? 1 : 0;
+        }
+        return count;
+      },
+      std::plus<>());
+}
+
 // The triangles that survive the clustering, on the representatives' vertices.
 std::vector<Triangle> clustered_triangles(const Mesh& mesh, const std::vector<std::uint32_t>& rep) {
   std::vector<Triangle> triangles;
   for (const Triangle& t : mesh.triangles) {
-    const Triangle r{rep[t[0]], rep[t[1]], rep[t[2]]};
-    if (r[0] != r[1] && r[1] != r[2] && r[2] != r[0]) triangles.push_back(r);
+    if (survives(t, rep)) triangles.push_back({rep[t[0]], rep[t[1]], rep[t[2]]});
   }
   return triangles;
 }
@@ -220,13 +246,11 @@ ErrorMesh clustered(const ErrorMesh& coarse, const DisplayMeshInput& in, std::ui
       std::sqrt(2 * surface_area(coarse.mesh) / static_cast<double>(budget)), diagonal / 60000)};
   while (cells.back() < diagonal) cells.push_back(cells.back() * 1.25);
   std::vector<std::uint32_t> rep;
-  std::vector<Triangle> triangles;
-  std::size_t last = 0;  // the step rep and triangles are of
+  std::size_t last = 0;  // the step rep is of
   const auto meets = [&](std::size_t step) {
     last = step;
     rep = clusters.representatives(cells[step]);
-    triangles = clustered_triangles(coarse.mesh, rep);
-    return triangles.size() <= budget || step + 1 == cells.size();
+    return surviving_count(coarse.mesh, rep) <= budget || step + 1 == cells.size();
   };
   std::size_t over = 0, within = 0;  // a step over the budget (or none), one within it
   if (!meets(0)) {
@@ -239,6 +263,7 @@ ErrorMesh clustered(const ErrorMesh& coarse, const DisplayMeshInput& in, std::ui
     }
     if (last != within) meets(within);
   }
+  std::vector<Triangle> triangles = clustered_triangles(coarse.mesh, rep);
   ErrorMesh out;
   std::vector<std::uint32_t> renumbered(coarse.mesh.vertex_count(), kNone);
   for (Triangle& t : triangles) {
