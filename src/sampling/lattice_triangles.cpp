@@ -3,6 +3,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "util/block_offsets.hpp"
+
 namespace ncv {
 
 double lattice_triangle_area(const SampleSet& samples, std::size_t t) {
@@ -13,10 +15,8 @@ double lattice_triangle_area(const SampleSet& samples, std::size_t t) {
 Buffer<LinearPatch> lattice_patches(const SampleSet& samples, std::span<const double> d,
                                     std::vector<double>* triangle_areas) {
   const std::size_t triangles = samples.lattice_sizes.size();
-  std::vector<std::uint64_t> first(triangles + 1, 0);
-  for (std::size_t t = 0; t < triangles; ++t) {
-    first[t + 1] = first[t] + lattice_triangle_count(samples.lattice_sizes[t]);
-  }
+  const std::vector<std::uint64_t> first = block_offsets(
+      triangles, [&](std::size_t t) { return lattice_triangle_count(samples.lattice_sizes[t]); });
   if (triangle_areas) triangle_areas->resize(triangles);
   Buffer<LinearPatch> patches(first[triangles]);
   const Mesh& mesh = samples.mesh;

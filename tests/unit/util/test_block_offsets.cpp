@@ -1,0 +1,24 @@
+// block_offsets (util/block_offsets.hpp): the running sums a serial loop gives, on sizes
+// around its block boundaries, with empty items, on any thread count.
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <vector>
+
+#include <tbb/global_control.h>
+
+#include "util/block_offsets.hpp"
+
+TEST_CASE("block offsets are the serial running sums", "[util][offsets]") {
+  for (const std::size_t n : {0, 1, 16383, 16384, 16385, 100000}) {
+    std::vector<std::uint64_t> counts(n);
+    for (std::size_t i = 0; i < n; ++i) counts[i] = (i * 2654435761u >> 7) % 5;  // 0 to 4
+    std::vector<std::uint64_t> expected(n + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) expected[i + 1] = expected[i] + counts[i];
+    for (const int threads : {1, 2, 3}) {
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+      INFO(n << " items, " << threads << " threads");
+      CHECK(ncv::block_offsets(n, [&](std::size_t i) { return counts[i]; }) == expected);
+    }
+  }
+}
