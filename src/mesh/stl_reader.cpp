@@ -6,11 +6,10 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
-#include <optional>
+#include <limits>
 #include <string_view>
 
-#include <tbb/parallel_for.h>
-
+#include "mesh/facet_weld.hpp"
 #include "mesh/vertex_welder.hpp"
 #include "util/error.hpp"
 
@@ -154,80 +153,6 @@ class AsciiStlParser {
   std::vector<Triangle> triangles_;
 };
 
-// Binary STL welding in two levels, to the mesh one VertexWelder over every corner in file
-// order gives, bit for bit: each block of facets is welded on its own, in parallel (its
-// table fits in cache), then the blocks' distinct vertices are welded together in block
-// order. A vertex's first corner in the file is the first of its block's distinct vertices
-// to carry those coordinates, and blocks are merged in order, so vertices are numbered in
-// the order of their first corner, with that corner's coordinates, as before. The serial
-// weld of every corner took 0.13-0.15 s of the 1.25 M-facet finishing part's read (one core);
-// the merge weighs the distinct vertices of each block only (docs/PERFORMANCE.md).
-constexpr std::uint64_t kWeldBlockFacets = 1 << 15;
-
-struct BlockWeld {
-  std::vector<Vec3> vertices;               // the block's distinct corners, first seen first
-  std::vector<std::uint32_t> corner;        // per corner: its index in `vertices`
-  std::optional<std::uint64_t> non_finite;  // the block's first facet with a NaN or inf
-};
-
-struct BlockWelds {
-  std::uint64_t count = 0;
-  std::vector<BlockWeld> welds;
-};
-
-BlockWeld weld_block(const char* facets, std::uint64_t first, std::uint64_t end) {
-  BlockWeld weld;
-  std::vector<Vec3> corners(3 * (end - first));
-  for (std::uint64_t t = first; t < end; ++t) {
-    float xyz[9];
-    std::memcpy(xyz, facets + t * kBinaryFacet + 12, sizeof xyz);
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 p{xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]};
-      if (!is_finite(p)) {
-        weld.non_finite = t;
-        return weld;
-      }
-      corners[3 * (t - first) + k] = p;
-    }
-  }
-  VertexWelder welder((end - first) / 2 + 16);
-  weld.corner.resize(corners.size());
-  welder.weld_all(corners, weld.corner);
-  weld.vertices = welder.take_vertices();
-  return weld;
-}
-
-BlockWelds weld_blocks(const char* facets, std::uint64_t count) {
-  BlockWelds blocks{count,
-                    std::vector<BlockWeld>((count + kWeldBlockFacets - 1) / kWeldBlockFacets)};
-  tbb::parallel_for(std::size_t{0}, blocks.welds.size(), [&](std::size_t b) {
-    const std::uint64_t first = b * kWeldBlockFacets;
-    blocks.welds[b] = weld_block(facets, first, std::min(count, first + kWeldBlockFacets));
-  });
-  return blocks;
-}
-
-Mesh merge_blocks(const BlockWelds& blocks) {
-  VertexWelder welder(blocks.count / 2 + 16);
-  std::vector<std::vector<std::uint32_t>> global(blocks.welds.size());
-  for (std::size_t b = 0; b < blocks.welds.size(); ++b) {
-    global[b].resize(blocks.welds[b].vertices.size());
-    welder.weld_all(blocks.welds[b].vertices, global[b]);
-  }
-  Mesh mesh;
-  mesh.triangles.resize(blocks.count);
-  tbb::parallel_for(std::size_t{0}, blocks.welds.size(), [&](std::size_t b) {
-    const std::vector<std::uint32_t>& corner = blocks.welds[b].corner;
-    Triangle* out = mesh.triangles.data() + b * kWeldBlockFacets;
-    for (std::size_t i = 0; i < corner.size() / 3; ++i) {
-      out[i] = {global[b][corner[3 * i]], global[b][corner[3 * i + 1]],
-                global[b][corner[3 * i + 2]]};
-    }
-  });
-  mesh.vertices = welder.take_vertices();
-  return mesh;
-}
-
 }  // namespace
 
 bool looks_like_binary_stl(std::span<const char> bytes) {
@@ -256,11 +181,14 @@ Mesh parse_binary_stl(std::span<const char> bytes, const std::string& source) {
                                          count, expected, bytes.size()));
   }
   if (count == 0) throw InputError(source, "binary STL with no triangles");
-  const BlockWelds blocks = weld_blocks(bytes.data() + kBinaryHeader, count);
-  for (const BlockWeld& block : blocks.welds) {
-    if (block.non_finite) throw non_finite_coordinate(*block.non_finite, source);
+  // Corner indices are 32-bit in the weld (and vertex indices everywhere).
+  if (3 * count > std::numeric_limits<std::uint32_t>::max()) {
+    throw InputError(source, fmt::format("{} triangles are too many (at most {})", count,
+                                         std::numeric_limits<std::uint32_t>::max() / 3));
   }
-  return merge_blocks(blocks);
+  WeldedFacets welded = weld_binary_facets(bytes.data() + kBinaryHeader, count);
+  if (welded.non_finite) throw non_finite_coordinate(*welded.non_finite, source);
+  return std::move(welded.mesh);
 }
 
 Mesh parse_ascii_stl(std::span<const char> bytes, const std::string& source) {

@@ -70,7 +70,7 @@ ErrorMesh lattice_error_mesh(const SampleSet& samples, std::span<const double> d
   const auto corner_vertex = [&](std::uint32_t v) {
     return samples.vertex_sample[v] != kNoSample ? samples.vertex_sample[v] : extra_vertex[v];
   };
-  const std::vector<std::uint64_t> first =
+  const Buffer<std::uint64_t> first =
       block_offsets(workpiece.triangle_count(), [&](std::size_t t) {
         return unsampled(t) ? 1 : lattice_triangle_count(samples.lattice_sizes[t]);
       });

@@ -11,10 +11,12 @@
 
 #include <tbb/parallel_for.h>
 
+#include "util/buffer.hpp"
+
 namespace ncv {
 
 template <class Count>
-std::vector<std::uint64_t> block_offsets(std::size_t n, Count&& count) {
+Buffer<std::uint64_t> block_offsets(std::size_t n, Count&& count) {
   constexpr std::size_t kBlock = 1 << 14;
   const std::size_t blocks = (n + kBlock - 1) / kBlock;
   std::vector<std::uint64_t> block_start(blocks + 1, 0);
@@ -24,7 +26,7 @@ std::vector<std::uint64_t> block_offsets(std::size_t n, Count&& count) {
     block_start[b + 1] = sum;
   });
   for (std::size_t b = 0; b < blocks; ++b) block_start[b + 1] += block_start[b];
-  std::vector<std::uint64_t> offsets(n + 1);
+  Buffer<std::uint64_t> offsets(n + 1);  // every element written below
   offsets[n] = block_start[blocks];
   tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
     std::uint64_t at = block_start[b];
