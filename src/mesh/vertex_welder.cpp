@@ -34,53 +34,19 @@ VertexWelder::VertexWelder(std::size_t expected_vertices) {
 }
 
 std::uint32_t VertexWelder::weld(Vec3 p) {
-  return weld(p, hash_bits(coordinate_bits(p)));
-}
-
-// The lookup inlined where it runs for every corner; a new vertex (about one corner in six
-// of a closed mesh) goes through insert.
-inline std::uint32_t VertexWelder::weld(Vec3 p, std::size_t hash) {
   const auto bits = coordinate_bits(p);
-  for (std::size_t slot = hash & mask_;; slot = (slot + 1) & mask_) {
+  for (std::size_t slot = hash_bits(bits) & mask_;; slot = (slot + 1) & mask_) {
     const std::uint32_t entry = slots_[slot];
-    if (entry == 0) return insert(p, bits, slot);
+    if (entry == 0) {
+      const auto index = static_cast<std::uint32_t>(vertices_.size());
+      slots_[slot] = index + 1;
+      keys_.push_back(bits);
+      vertices_.push_back(p);
+      if (2 * vertices_.size() > slots_.size()) grow();
+      return index;
+    }
     const auto& key = keys_[entry - 1];
     if (key[0] == bits[0] && key[1] == bits[1] && key[2] == bits[2]) return entry - 1;
-  }
-}
-
-std::uint32_t VertexWelder::insert(Vec3 p, const std::array<std::uint64_t, 3>& bits,
-                                   std::size_t slot) {
-  const auto index = static_cast<std::uint32_t>(vertices_.size());
-  slots_[slot] = index + 1;
-  keys_.push_back(bits);
-  vertices_.push_back(p);
-  if (2 * vertices_.size() > slots_.size()) grow();
-  return index;
-}
-
-void VertexWelder::weld_all(std::span<const Vec3> points, std::span<std::uint32_t> indices) {
-  // The slot of the point kSlotsAhead on is fetched; once it has arrived (kKeysAhead on),
-  // the key it names. Each point is hashed once: hashes[j % kSlotsAhead] holds point j's
-  // hash for the kSlotsAhead points from the current one on.
-  constexpr std::size_t kSlotsAhead = 16, kKeysAhead = 8;
-  const std::size_t count = points.size();
-  std::array<std::size_t, kSlotsAhead> hashes{};
-  for (std::size_t j = 0; j < std::min(count, kSlotsAhead); ++j) {
-    hashes[j] = hash_bits(coordinate_bits(points[j]));
-  }
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::size_t hash = hashes[i % kSlotsAhead];
-    if (i + kSlotsAhead < count) {
-      const std::size_t ahead = hash_bits(coordinate_bits(points[i + kSlotsAhead]));
-      hashes[i % kSlotsAhead] = ahead;
-      __builtin_prefetch(&slots_[ahead & mask_]);
-    }
-    if (i + kKeysAhead < count) {
-      const std::uint32_t entry = slots_[hashes[(i + kKeysAhead) % kSlotsAhead] & mask_];
-      if (entry != 0) __builtin_prefetch(&keys_[entry - 1]);
-    }
-    indices[i] = weld(points[i], hash);
   }
 }
 

@@ -1,10 +1,10 @@
-// Welds vertex coordinates by exact equality (an STL stores every corner separately).
+// Welds vertex coordinates by exact equality, one at a time (an ASCII STL stores every corner
+// separately; binary STL is welded in parallel by mesh/facet_weld.hpp, to the same mesh).
 // Open addressing on the coordinate bits: no per-vertex allocation, first-seen order.
 #pragma once
 
 #include <array>
 #include <cstdint>
-#include <span>
 #include <vector>
 
 #include "geometry/vec3.hpp"
@@ -16,15 +16,9 @@ class VertexWelder {
   explicit VertexWelder(std::size_t expected_vertices);
   // Index of the vertex with these coordinates, adding it if new.
   std::uint32_t weld(Vec3 p);
-  // weld(points[i]) into indices[i] for each i, in order; the table is prefetched a few
-  // points ahead, since its random accesses, not the arithmetic, are what welding costs.
-  void weld_all(std::span<const Vec3> points, std::span<std::uint32_t> indices);
   std::vector<Vec3> take_vertices() { return std::move(vertices_); }
 
  private:
-  std::uint32_t weld(Vec3 p, std::size_t hash);  // hash = hash_bits of p's coordinates
-  // p as vertex number vertices_.size(), in the empty slot its probe ended at.
-  std::uint32_t insert(Vec3 p, const std::array<std::uint64_t, 3>& bits, std::size_t slot);
   void grow();
 
   std::vector<std::array<std::uint64_t, 3>> keys_;
