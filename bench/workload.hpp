@@ -30,7 +30,9 @@ inline Workload load_workload(const char* workpiece_path, const char* nominal_pa
   w.nominal = index_reference(read_mesh(nominal_path), nominal_path);
   Mesh workpiece = read_mesh(workpiece_path);
   const double step = step_fraction * bounding_box(workpiece).diagonal();
-  w.points = sample_mesh(std::move(workpiece), step, SamplingScheme::all).positions;
+  const Buffer<Vec3> points =
+      sample_mesh(std::move(workpiece), step, SamplingScheme::all).positions;
+  w.points.assign(points.begin(), points.end());
   return w;
 }
 

@@ -46,7 +46,7 @@ ErrorMesh lattice_error_mesh(const SampleSet& samples, std::span<const double> d
                     "vertices instead of the lattice",
                     samples.sample_count()));
   }
-  ErrorMesh out{{samples.positions, {}},
+  ErrorMesh out{{std::vector<Vec3>(samples.positions.begin(), samples.positions.end()), {}},
                 std::vector<double>(d.begin(), d.end()),
                 sample_region.empty()
                     ? std::vector<std::uint32_t>(d.size(), kNoRegion)
@@ -70,10 +70,9 @@ ErrorMesh lattice_error_mesh(const SampleSet& samples, std::span<const double> d
   const auto corner_vertex = [&](std::uint32_t v) {
     return samples.vertex_sample[v] != kNoSample ? samples.vertex_sample[v] : extra_vertex[v];
   };
-  const Buffer<std::uint64_t> first =
-      block_offsets(workpiece.triangle_count(), [&](std::size_t t) {
-        return unsampled(t) ? 1 : lattice_triangle_count(samples.lattice_sizes[t]);
-      });
+  const Buffer<std::uint64_t> first = block_offsets(workpiece.triangle_count(), [&](std::size_t t) {
+    return unsampled(t) ? 1 : lattice_triangle_count(samples.lattice_sizes[t]);
+  });
   out.mesh.triangles.resize(first.back());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, workpiece.triangle_count(), 4096),
                     [&](const auto& range) {

@@ -1,4 +1,5 @@
 #include "sampling/sampling.hpp"
+#include "util/block_offsets.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -46,10 +47,16 @@ std::vector<std::uint32_t> number_vertex_samples(SampleSet& set) {
           }
         }
       });
-  std::uint32_t count = 0;
-  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
-    if (owner_of_vertex[v] != kNoSample) set.vertex_sample[v] = count++;
-  }
+  const Buffer<std::uint64_t> number = block_offsets(
+      mesh.vertex_count(), [&](std::size_t v) { return owner_of_vertex[v] != kNoSample ? 1 : 0; });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.vertex_count(), 1 << 14),
+                    [&](const auto& r) {
+                      for (std::size_t v = r.begin(); v != r.end(); ++v) {
+                        if (owner_of_vertex[v] != kNoSample) {
+                          set.vertex_sample[v] = static_cast<std::uint32_t>(number[v]);
+                        }
+                      }
+                    });
   return owner_of_vertex;
 }
 
@@ -210,18 +217,43 @@ SampleSet sample_mesh(Mesh mesh, SamplingPlan plan, SamplingReport* report,
   set.lattice_sizes = std::move(plan.lattice_sizes);
 
   const std::vector<std::uint32_t> owner_of_vertex = number_vertex_samples(set);
-  set.first_interior_sample.resize(set.lattice_sizes.size());
-  std::uint64_t next = std::count_if(set.vertex_sample.begin(), set.vertex_sample.end(),
-                                     [](std::uint32_t s) { return s != kNoSample; });
-  for (std::size_t t = 0; t < set.lattice_sizes.size(); ++t) {
-    set.first_interior_sample[t] = next;
-    // Only reachable past the memory guard (--force): a wrapped count would size the
-    // arrays too small for the lattice written into them.
-    if (__builtin_add_overflow(next, lattice_interior_count(set.lattice_sizes[t]), &next)) {
-      throw UsageError(
-          fmt::format("sampling at step {} would give more than 2^64 samples", set.step));
-    }
+  const std::uint64_t vertex_samples =
+      std::count_if(set.vertex_sample.begin(), set.vertex_sample.end(),
+                    [](std::uint32_t s) { return s != kNoSample; });
+  // Only reachable past the memory guard (--force): a wrapped count would size the arrays
+  // too small for the lattice written into them. Checked first, so the offsets cannot wrap.
+  struct Total {
+    std::uint64_t sum = 0;
+    bool wrapped = false;
+    void add(std::uint64_t count) { wrapped = __builtin_add_overflow(sum, count, &sum) || wrapped; }
+  };
+  const Total total = ordered_reduce(
+      set.lattice_sizes.size(), 1 << 16, Total{vertex_samples, false},
+      [&](std::size_t begin, std::size_t end) {
+        Total part;
+        for (std::size_t t = begin; t < end; ++t)
+          part.add(lattice_interior_count(set.lattice_sizes[t]));
+        return part;
+      },
+      [](Total& acc, const Total& part) {
+        acc.add(part.sum);
+        acc.wrapped = acc.wrapped || part.wrapped;
+      });
+  if (total.wrapped) {
+    throw UsageError(
+        fmt::format("sampling at step {} would give more than 2^64 samples", set.step));
   }
+  set.first_interior_sample = block_offsets(set.lattice_sizes.size(), [&](std::size_t t) {
+    return lattice_interior_count(set.lattice_sizes[t]);
+  });
+  const std::uint64_t next = total.sum;
+  set.first_interior_sample.pop_back();
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, set.lattice_sizes.size(), 1 << 14),
+                    [&](const auto& r) {
+                      for (std::size_t t = r.begin(); t != r.end(); ++t) {
+                        set.first_interior_sample[t] += vertex_samples;
+                      }
+                    });
   set.total_samples = next;
   const SampleRange range = shard ? shard_range(next, *shard) : SampleRange{0, next};
   set.shard = shard;

@@ -15,6 +15,7 @@
 
 #include "mesh/mesh.hpp"
 #include "sampling/shard.hpp"
+#include "util/buffer.hpp"
 #include "util/enum_names.hpp"
 
 namespace ncv {
@@ -52,10 +53,9 @@ struct SampleSet {
   SamplingScheme scheme = SamplingScheme::all;
   std::uint64_t mesh_hash = 0;
 
-  std::vector<std::uint32_t> lattice_sizes;  // lattice size per triangle; 0 = not sampled
-  std::vector<std::uint64_t>
-      first_interior_sample;                 // first own (non-corner) sample of each triangle
-  std::vector<std::uint32_t> vertex_sample;  // sample of each mesh vertex, or kNoSample
+  std::vector<std::uint32_t> lattice_sizes;     // lattice size per triangle; 0 = not sampled
+  Buffer<std::uint64_t> first_interior_sample;  // first own (non-corner) sample of each triangle
+  std::vector<std::uint32_t> vertex_sample;     // sample of each mesh vertex, or kNoSample
 
   // The samples this set holds are numbers first_sample .. first_sample + sample_count() - 1
   // of the lattice's total_samples: all of them, or a shard's range (shard.hpp).
@@ -63,10 +63,12 @@ struct SampleSet {
   std::uint64_t first_sample = 0;
   std::optional<Shard> shard;  // set when this is a shard's range
 
-  std::vector<Vec3> positions;           // per sample held
-  std::vector<std::uint32_t> owner;      // per sample held: a triangle it lies on
-  std::vector<std::uint32_t> lattice_i;  // per sample held: lattice coordinates in owner
-  std::vector<std::uint32_t> lattice_j;
+  // Per sample held, filled in parallel (Buffer: not zeroed first): its point, a triangle it
+  // lies on (owner) and its lattice coordinates there.
+  Buffer<Vec3> positions;
+  Buffer<std::uint32_t> owner;
+  Buffer<std::uint32_t> lattice_i;
+  Buffer<std::uint32_t> lattice_j;
 
   std::size_t sample_count() const { return positions.size(); }
   bool whole() const { return first_sample == 0 && sample_count() == total_samples; }
