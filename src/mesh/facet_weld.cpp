@@ -151,15 +151,16 @@ WeldedFacets weld_binary_facets(const char* facets, std::uint64_t count) {
     first = first_occurrences(parts, corners);
   }
   // Vertices are the first occurrences, numbered in file order.
-  const Buffer<std::uint64_t> vertex =
-      block_offsets(corners, [&](std::size_t c) { return first[c] == c ? 1 : 0; });
+  // 32-bit: the corners' count fits (parse_binary_stl refuses more), so their vertices' does.
+  const Buffer<std::uint32_t> vertex =
+      block_offsets<std::uint32_t>(corners, [&](std::size_t c) { return first[c] == c ? 1 : 0; });
   Mesh& mesh = out.mesh;
   mesh.vertices.resize(vertex.back());
   mesh.triangles.resize(count);
   tbb::parallel_for(std::uint64_t{0}, count, [&](std::uint64_t t) {
     for (int k = 0; k < 3; ++k) {
       const std::uint64_t c = 3 * t + k;
-      mesh.triangles[t][k] = static_cast<std::uint32_t>(vertex[first[c]]);
+      mesh.triangles[t][k] = vertex[first[c]];
       if (first[c] == c) mesh.vertices[vertex[c]] = corner_point(facets, c);
     }
   });

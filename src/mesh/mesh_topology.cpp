@@ -2,11 +2,17 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <functional>
 #include <numeric>
+#include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
+#include "util/block_offsets.hpp"
+#include "util/buffer.hpp"
 #include "util/ordered_reduce.hpp"
 
 namespace ncv {
@@ -31,36 +37,88 @@ std::uint32_t slot_high(const Mesh& mesh, std::uint32_t slot) {
 
 // Slots of usable triangles as keys (higher vertex << 32 | slot), bucketed by lower vertex
 // (counting sort keeps slot order). Sorting a bucket's keys orders its slots by higher
-// vertex, then by slot, without reading the mesh again.
-std::vector<std::uint64_t> slot_keys_by_low_vertex(const Mesh& mesh,
-                                                   std::vector<std::uint32_t>& bucket_begin) {
-  bucket_begin.assign(mesh.vertex_count() + 1, 0);
-  const auto slot_total = static_cast<std::uint32_t>(3 * mesh.triangle_count());
-  for (std::uint32_t s = 0; s < slot_total; ++s) {
-    if (!repeats_vertex(mesh.triangles[s / 3])) ++bucket_begin[slot_low(mesh, s) + 1];
-  }
-  std::partial_sum(bucket_begin.begin(), bucket_begin.end(), bucket_begin.begin());
-  std::vector<std::uint32_t> cursor(bucket_begin.begin(), bucket_begin.end() - 1);
-  std::vector<std::uint64_t> keys(bucket_begin.back());
-  for (std::uint32_t s = 0; s < slot_total; ++s) {
-    if (repeats_vertex(mesh.triangles[s / 3])) continue;
-    keys[cursor[slot_low(mesh, s)]++] = std::uint64_t{slot_high(mesh, s)} << 32 | s;
-  }
+// vertex, then by slot, without reading the mesh again. The sort runs on a fixed number of
+// chunks of slots side by side: each counts its slots per bucket, then writes them after the
+// earlier chunks' in each bucket, so the keys are the serial sort's whatever the threads.
+constexpr std::size_t kSlotChunks = 4;
+
+Buffer<std::uint64_t> slot_keys_by_low_vertex(const Mesh& mesh,
+                                              std::vector<std::uint32_t>& bucket_begin) {
+  const std::size_t vertices = mesh.vertex_count();
+  const std::uint64_t slot_total = 3 * mesh.triangle_count();
+  const auto chunk_slots = [&](std::size_t c, auto&& visit) {
+    const auto end = static_cast<std::uint32_t>(slot_total * (c + 1) / kSlotChunks);
+    for (auto s = static_cast<std::uint32_t>(slot_total * c / kSlotChunks); s < end; ++s) {
+      if (!repeats_vertex(mesh.triangles[s / 3])) visit(s);
+    }
+  };
+  // Per chunk, its slots per bucket; then where the chunk's slots of each bucket start.
+  std::array<std::vector<std::uint32_t>, kSlotChunks> at;
+  tbb::parallel_for(std::size_t{0}, kSlotChunks, [&](std::size_t c) {
+    at[c].assign(vertices, 0);
+    chunk_slots(c, [&](std::uint32_t s) { ++at[c][slot_low(mesh, s)]; });
+  });
+  const Buffer<std::uint64_t> begin = block_offsets(vertices, [&](std::size_t v) {
+    std::uint64_t count = 0;
+    for (const auto& counts : at) count += counts[v];
+    return count;
+  });
+  bucket_begin.resize(vertices + 1);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices + 1, 1 << 14), [&](const auto& r) {
+    for (std::size_t v = r.begin(); v != r.end(); ++v) {
+      bucket_begin[v] = static_cast<std::uint32_t>(begin[v]);
+      if (v == vertices) continue;
+      std::uint32_t next = bucket_begin[v];
+      for (auto& counts : at) next += std::exchange(counts[v], next);
+    }
+  });
+  Buffer<std::uint64_t> keys(bucket_begin.back());
+  tbb::parallel_for(std::size_t{0}, kSlotChunks, [&](std::size_t c) {
+    chunk_slots(c, [&](std::uint32_t s) {
+      keys[at[c][slot_low(mesh, s)]++] = std::uint64_t{slot_high(mesh, s)} << 32 | s;
+    });
+  });
   return keys;
 }
 
-struct CornerForest {
-  std::vector<std::uint32_t> parent;
+// Corners united across two-triangle edges, from several threads at once: a root is linked
+// below a smaller root by compare-and-swap (a lost race retries from the new roots), and
+// paths are halved by compare-and-swap too, so every link points to a smaller corner and
+// each fan ends with its lowest corner as root, in whatever order the unions ran.
+class CornerForest {
+ public:
+  explicit CornerForest(std::size_t corners) : parent_(corners) {
+    std::iota(parent_.begin(), parent_.end(), 0u);
+  }
 
   std::uint32_t find(std::uint32_t c) {
-    while (parent[c] != c) c = parent[c] = parent[parent[c]];
-    return c;
+    for (;;) {
+      std::atomic_ref<std::uint32_t> link(parent_[c]);
+      std::uint32_t p = link.load(std::memory_order_relaxed);
+      if (p == c) return c;
+      const std::uint32_t grandparent =
+          std::atomic_ref<std::uint32_t>(parent_[p]).load(std::memory_order_relaxed);
+      if (grandparent != p) link.compare_exchange_weak(p, grandparent, std::memory_order_relaxed);
+      c = grandparent;
+    }
   }
+
   void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    for (;;) {
+      a = find(a);
+      b = find(b);
+      if (a == b) return;
+      if (a < b) std::swap(a, b);
+      std::uint32_t root = a;
+      if (std::atomic_ref<std::uint32_t>(parent_[a])
+              .compare_exchange_strong(root, b, std::memory_order_relaxed)) {
+        return;
+      }
+    }
   }
+
+ private:
+  std::vector<std::uint32_t> parent_;
 };
 
 std::uint32_t start_corner(std::uint32_t slot) {
@@ -72,28 +130,40 @@ std::uint32_t end_corner(std::uint32_t slot) {
 
 // A vertex is non-manifold when its triangles form more than one fan, fans being joined
 // across the two-triangle edges around it: corners are united across each such edge and
-// every vertex counts its distinct roots.
+// every vertex counts its distinct roots (its second one makes it non-manifold). Both passes
+// run in parallel; the serial union-find took 0.04-0.05 s of the 1.25 M-triangle workpiece's
+// topology.
 std::uint64_t count_non_manifold_vertices(const Mesh& mesh, const EdgeIncidence& incidence) {
-  CornerForest forest;
-  forest.parent.resize(3 * mesh.triangle_count());
-  std::iota(forest.parent.begin(), forest.parent.end(), 0u);
-  for (std::size_t e = 0; e < incidence.edge_count(); ++e) {
-    if (incidence.slot_count(e) != 2) continue;
-    const std::uint32_t s1 = incidence.slots[incidence.edge_begin[e]];
-    const std::uint32_t s2 = incidence.slots[incidence.edge_begin[e] + 1];
-    const bool same_direction = slot_start(mesh, s1) == slot_start(mesh, s2);
-    forest.unite(start_corner(s1), same_direction ? start_corner(s2) : end_corner(s2));
-    forest.unite(end_corner(s1), same_direction ? end_corner(s2) : start_corner(s2));
-  }
-  std::vector<std::uint8_t> fans(mesh.vertex_count(), 0);
-  std::uint64_t non_manifold = 0;
-  for (std::uint32_t c = 0; c < forest.parent.size(); ++c) {
-    if (repeats_vertex(mesh.triangles[c / 3]) || forest.find(c) != c) continue;
-    std::uint8_t& count = fans[mesh.triangles[c / 3][c % 3]];
-    if (count == 1) ++non_manifold;
-    count = static_cast<std::uint8_t>(std::min(count + 1, 2));
-  }
-  return non_manifold;
+  CornerForest forest(3 * mesh.triangle_count());
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, incidence.edge_count(), 1 << 14), [&](const auto& r) {
+        for (std::size_t e = r.begin(); e != r.end(); ++e) {
+          if (incidence.slot_count(e) != 2) continue;
+          const std::uint32_t s1 = incidence.slots[incidence.edge_begin[e]];
+          const std::uint32_t s2 = incidence.slots[incidence.edge_begin[e] + 1];
+          const bool same_direction = slot_start(mesh, s1) == slot_start(mesh, s2);
+          forest.unite(start_corner(s1), same_direction ? start_corner(s2) : end_corner(s2));
+          forest.unite(end_corner(s1), same_direction ? end_corner(s2) : start_corner(s2));
+        }
+      });
+  std::vector<std::uint8_t> fans(mesh.vertex_count(), 0);  // 0, 1, or 2 for two and more
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::uint32_t>(0, static_cast<std::uint32_t>(3 * mesh.triangle_count()),
+                                        1 << 14),
+      std::uint64_t{0},
+      [&](const auto& r, std::uint64_t non_manifold) {
+        for (std::uint32_t c = r.begin(); c != r.end(); ++c) {
+          if (repeats_vertex(mesh.triangles[c / 3]) || forest.find(c) != c) continue;
+          std::atomic_ref<std::uint8_t> count(fans[mesh.triangles[c / 3][c % 3]]);
+          std::uint8_t seen = count.load(std::memory_order_relaxed);
+          while (seen < 2 && !count.compare_exchange_weak(seen, static_cast<std::uint8_t>(seen + 1),
+                                                          std::memory_order_relaxed)) {
+          }
+          non_manifold += seen == 1 ? 1 : 0;
+        }
+        return non_manifold;
+      },
+      std::plus<>());
 }
 
 struct EdgeKinds {
@@ -223,7 +293,7 @@ bool is_degenerate_triangle(Vec3 a, Vec3 b, Vec3 c) {
 // the edges are then numbered bucket after bucket, as a serial pass would number them.
 EdgeIncidence build_edge_incidence(const Mesh& mesh) {
   std::vector<std::uint32_t> bucket_begin;
-  std::vector<std::uint64_t> keys = slot_keys_by_low_vertex(mesh, bucket_begin);
+  Buffer<std::uint64_t> keys = slot_keys_by_low_vertex(mesh, bucket_begin);
   const auto starts_edge = [&](std::uint32_t i, std::size_t v) {
     return i == bucket_begin[v] || keys[i] >> 32 != keys[i - 1] >> 32;
   };

@@ -1,7 +1,7 @@
 // Where each item's records start in one array of everybody's records: offsets[i] is the sum
-// of count(k) for k < i, offsets[n] the total. Two parallel passes over fixed blocks (each
-// block's sum, then each block's offsets from its start), so a million items cost a few
-// milliseconds instead of a serial loop's ten; integers, so the result is exact.
+// of count(k) for k < i, offsets[n] the total (which must fit Offset). Two parallel passes over
+// fixed blocks (each block's sum, then each block's offsets from its start), so a million items
+// cost a few milliseconds instead of a serial loop's ten; integers, so the result is exact.
 #pragma once
 
 #include <algorithm>
@@ -15,24 +15,26 @@
 
 namespace ncv {
 
-template <class Count>
-Buffer<std::uint64_t> block_offsets(std::size_t n, Count&& count) {
+template <class Offset = std::uint64_t, class Count>
+Buffer<Offset> block_offsets(std::size_t n, Count&& count) {
   constexpr std::size_t kBlock = 1 << 14;
   const std::size_t blocks = (n + kBlock - 1) / kBlock;
-  std::vector<std::uint64_t> block_start(blocks + 1, 0);
+  std::vector<Offset> block_start(blocks + 1, 0);
   tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-    std::uint64_t sum = 0;
-    for (std::size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) sum += count(i);
+    Offset sum = 0;
+    for (std::size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) {
+      sum += static_cast<Offset>(count(i));
+    }
     block_start[b + 1] = sum;
   });
   for (std::size_t b = 0; b < blocks; ++b) block_start[b + 1] += block_start[b];
-  Buffer<std::uint64_t> offsets(n + 1);  // every element written below
+  Buffer<Offset> offsets(n + 1);  // every element written below
   offsets[n] = block_start[blocks];
   tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-    std::uint64_t at = block_start[b];
+    Offset at = block_start[b];
     for (std::size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) {
       offsets[i] = at;
-      at += count(i);
+      at += static_cast<Offset>(count(i));
     }
   });
   return offsets;

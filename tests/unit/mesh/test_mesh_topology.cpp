@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -110,6 +111,57 @@ TEST_CASE("topology: non-manifold edges and vertices", "[topology]") {
     CHECK(r.non_manifold_edges == 0);
     CHECK(r.non_manifold_vertices == 1);
     CHECK_FALSE(r.manifold());
+  }
+}
+
+TEST_CASE("non-manifold vertices counted alike on any thread count", "[topology]") {
+  // 3000 unit boxes along the diagonal, each touching the next at one welded corner: 2999
+  // vertices where two fans meet; a third box at every tenth joint makes three fans there.
+  ncv::Mesh mesh;
+  std::uint32_t previous_top = 0;
+  const auto add_box = [&](ncv::Vec3 low, std::optional<std::uint32_t> weld_low) {
+    const ncv::Mesh box = fx::box(low, low + ncv::Vec3(1, 1, 1));
+    std::vector<std::uint32_t> map(box.vertices.size());
+    for (std::uint32_t v = 0; v < box.vertices.size(); ++v) {
+      if (v == 0 && weld_low) {
+        map[v] = *weld_low;
+      } else {
+        map[v] = static_cast<std::uint32_t>(mesh.vertices.size());
+        mesh.vertices.push_back(box.vertices[v]);
+      }
+    }
+    for (const ncv::Triangle& t : box.triangles) {
+      mesh.triangles.push_back({map[t[0]], map[t[1]], map[t[2]]});
+    }
+    return map[7];  // the corner (1,1,1) above low
+  };
+  std::uint64_t triple = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const ncv::Vec3 low(k, k, k);
+    const std::uint32_t joint = previous_top;
+    previous_top = add_box(low, k > 0 ? std::optional<std::uint32_t>(joint) : std::nullopt);
+    if (k > 0 && k % 10 == 0) {
+      // A box below-right of the joint, touching it with its own corner (1,1,1): here its
+      // corner 7 is welded to the joint instead of corner 0, by moving it so.
+      const ncv::Mesh box = fx::box(low - ncv::Vec3(1, 1, 1), low);
+      std::vector<std::uint32_t> map(box.vertices.size());
+      for (std::uint32_t v = 0; v < box.vertices.size(); ++v) {
+        map[v] = v == 7 ? joint : static_cast<std::uint32_t>(mesh.vertices.size());
+        if (v != 7) mesh.vertices.push_back(box.vertices[v] + ncv::Vec3(0.5, -3, 0));
+      }
+      for (const ncv::Triangle& t : box.triangles) {
+        mesh.triangles.push_back({map[t[0]], map[t[1]], map[t[2]]});
+      }
+      ++triple;
+    }
+  }
+  for (const int threads : {1, 2, 3}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    INFO(threads << " threads, " << triple << " joints of three fans");
+    const ncv::TopologyReport r = analyse(mesh);
+    CHECK(r.closed());
+    CHECK(r.non_manifold_edges == 0);
+    CHECK(r.non_manifold_vertices == 2999);
   }
 }
 
