@@ -1,5 +1,4 @@
 #include "sampling/sampling.hpp"
-#include "util/block_offsets.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -11,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "util/block_offsets.hpp"
 #include "util/error.hpp"
 #include "util/ordered_reduce.hpp"
 
@@ -18,6 +18,26 @@ namespace ncv {
 namespace {
 
 constexpr std::size_t kTriangleBlock = 1 << 14;  // ordered_reduce's blocks
+
+// A tiny step gives up to 2 * 10^18 samples per triangle: sample counts saturate rather than
+// wrap to a count small enough to pass the memory guard or to size arrays too small.
+void saturating_add(std::uint64_t& sum, std::uint64_t value) {
+  if (__builtin_add_overflow(sum, value, &sum)) sum = std::numeric_limits<std::uint64_t>::max();
+}
+
+// The samples of the triangles' lattices that are not mesh vertices, saturated.
+std::uint64_t interior_sample_count(const std::vector<std::uint32_t>& sizes) {
+  return ordered_reduce(
+      sizes.size(), kTriangleBlock, std::uint64_t{0},
+      [&](std::size_t begin, std::size_t end) {
+        std::uint64_t interior = 0;
+        for (std::size_t t = begin; t < end; ++t) {
+          saturating_add(interior, lattice_interior_count(sizes[t]));
+        }
+        return interior;
+      },
+      saturating_add);
+}
 
 // Lattice coordinates of corner k of a size-n lattice: A = (0,0), B = (n-1,0), C = (0,n-1).
 std::pair<std::uint32_t, std::uint32_t> corner_lattice_coordinates(int k, std::uint32_t n) {
@@ -47,13 +67,13 @@ std::vector<std::uint32_t> number_vertex_samples(SampleSet& set) {
           }
         }
       });
-  const Buffer<std::uint64_t> number = block_offsets(
+  const Buffer<std::uint32_t> number = block_offsets<std::uint32_t>(
       mesh.vertex_count(), [&](std::size_t v) { return owner_of_vertex[v] != kNoSample ? 1 : 0; });
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.vertex_count(), 1 << 14),
                     [&](const auto& r) {
                       for (std::size_t v = r.begin(); v != r.end(); ++v) {
                         if (owner_of_vertex[v] != kNoSample) {
-                          set.vertex_sample[v] = static_cast<std::uint32_t>(number[v]);
+                          set.vertex_sample[v] = number[v];
                         }
                       }
                     });
@@ -178,25 +198,16 @@ SamplingPlan plan_sampling(const Mesh& mesh, double step, SamplingScheme scheme)
 std::uint64_t predicted_sample_count(const Mesh& mesh, const SamplingPlan& plan) {
   const std::vector<std::uint32_t>& sizes = plan.lattice_sizes;
   std::vector<std::uint8_t> vertex_used(mesh.vertex_count(), 0);
-  // A tiny step gives up to 2 * 10^18 samples per triangle: the sum saturates rather than
-  // wrap to a count small enough to pass the memory guard.
-  const auto saturating_add = [](std::uint64_t& sum, std::uint64_t value) {
-    if (__builtin_add_overflow(sum, value, &sum)) sum = std::numeric_limits<std::uint64_t>::max();
-  };
-  std::uint64_t count = ordered_reduce(
-      sizes.size(), kTriangleBlock, std::uint64_t{0},
-      [&](std::size_t begin, std::size_t end) {
-        std::uint64_t interior = 0;
-        for (std::size_t t = begin; t < end; ++t) {
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, sizes.size(), kTriangleBlock), [&](const auto& r) {
+        for (std::size_t t = r.begin(); t != r.end(); ++t) {
           if (sizes[t] == 0) continue;
-          saturating_add(interior, lattice_interior_count(sizes[t]));
           for (const std::uint32_t v : mesh.triangles[t]) {
             std::atomic_ref<std::uint8_t>(vertex_used[v]).store(1, std::memory_order_relaxed);
           }
         }
-        return interior;
-      },
-      saturating_add);
+      });
+  std::uint64_t count = interior_sample_count(sizes);
   saturating_add(count, static_cast<std::uint64_t>(
                             std::count(vertex_used.begin(), vertex_used.end(), std::uint8_t{1})));
   return count;
@@ -220,40 +231,19 @@ SampleSet sample_mesh(Mesh mesh, SamplingPlan plan, SamplingReport* report,
   const std::uint64_t vertex_samples =
       std::count_if(set.vertex_sample.begin(), set.vertex_sample.end(),
                     [](std::uint32_t s) { return s != kNoSample; });
-  // Only reachable past the memory guard (--force): a wrapped count would size the arrays
+  // Only reachable past the memory guard (--force): a saturated count would size the arrays
   // too small for the lattice written into them. Checked first, so the offsets cannot wrap.
-  struct Total {
-    std::uint64_t sum = 0;
-    bool wrapped = false;
-    void add(std::uint64_t count) { wrapped = __builtin_add_overflow(sum, count, &sum) || wrapped; }
-  };
-  const Total total = ordered_reduce(
-      set.lattice_sizes.size(), 1 << 16, Total{vertex_samples, false},
-      [&](std::size_t begin, std::size_t end) {
-        Total part;
-        for (std::size_t t = begin; t < end; ++t)
-          part.add(lattice_interior_count(set.lattice_sizes[t]));
-        return part;
-      },
-      [](Total& acc, const Total& part) {
-        acc.add(part.sum);
-        acc.wrapped = acc.wrapped || part.wrapped;
-      });
-  if (total.wrapped) {
+  std::uint64_t next = interior_sample_count(set.lattice_sizes);
+  saturating_add(next, vertex_samples);
+  if (next == std::numeric_limits<std::uint64_t>::max()) {
     throw UsageError(
         fmt::format("sampling at step {} would give more than 2^64 samples", set.step));
   }
-  set.first_interior_sample = block_offsets(set.lattice_sizes.size(), [&](std::size_t t) {
-    return lattice_interior_count(set.lattice_sizes[t]);
-  });
-  const std::uint64_t next = total.sum;
+  // The interior samples follow the vertex samples, triangle after triangle.
+  set.first_interior_sample = block_offsets(
+      set.lattice_sizes.size(),
+      [&](std::size_t t) { return lattice_interior_count(set.lattice_sizes[t]); }, vertex_samples);
   set.first_interior_sample.pop_back();
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, set.lattice_sizes.size(), 1 << 14),
-                    [&](const auto& r) {
-                      for (std::size_t t = r.begin(); t != r.end(); ++t) {
-                        set.first_interior_sample[t] += vertex_samples;
-                      }
-                    });
   set.total_samples = next;
   const SampleRange range = shard ? shard_range(next, *shard) : SampleRange{0, next};
   set.shard = shard;

@@ -1,7 +1,8 @@
-// Where each item's records start in one array of everybody's records: offsets[i] is the sum
-// of count(k) for k < i, offsets[n] the total (which must fit Offset). Two parallel passes over
-// fixed blocks (each block's sum, then each block's offsets from its start), so a million items
-// cost a few milliseconds instead of a serial loop's ten; integers, so the result is exact.
+// Where each item's records start in one array of everybody's records: offsets[i] is start
+// plus the sum of count(k) for k < i, offsets[n] the end (which must fit Offset). Two parallel
+// passes over fixed blocks (each block's sum, then each block's offsets from its start), so a
+// million items cost a few milliseconds instead of a serial loop's ten; integers, so the result is
+// exact.
 #pragma once
 
 #include <algorithm>
@@ -16,10 +17,11 @@
 namespace ncv {
 
 template <class Offset = std::uint64_t, class Count>
-Buffer<Offset> block_offsets(std::size_t n, Count&& count) {
+Buffer<Offset> block_offsets(std::size_t n, Count&& count, Offset start = 0) {
   constexpr std::size_t kBlock = 1 << 14;
   const std::size_t blocks = (n + kBlock - 1) / kBlock;
   std::vector<Offset> block_start(blocks + 1, 0);
+  block_start[0] = start;
   tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
     Offset sum = 0;
     for (std::size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) {

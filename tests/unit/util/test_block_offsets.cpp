@@ -1,5 +1,5 @@
-// block_offsets (util/block_offsets.hpp): the running sums a serial loop gives, on sizes
-// around its block boundaries, with empty items, on any thread count.
+// block_offsets (util/block_offsets.hpp): the running sums a serial loop gives, from zero or
+// from a start, on sizes around its block boundaries, with empty items, on any thread count.
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -21,6 +21,9 @@ TEST_CASE("block offsets are the serial running sums", "[util][offsets]") {
       const ncv::Buffer<std::uint64_t> offsets =
           ncv::block_offsets(n, [&](std::size_t i) { return counts[i]; });
       CHECK(std::vector<std::uint64_t>(offsets.begin(), offsets.end()) == expected);
+      const ncv::Buffer<std::uint64_t> shifted = ncv::block_offsets(
+          n, [&](std::size_t i) { return counts[i]; }, std::uint64_t{7});
+      for (std::size_t i = 0; i <= n; ++i) REQUIRE(shifted[i] == expected[i] + 7);
     }
   }
 }
