@@ -25,26 +25,29 @@ constexpr std::uint64_t kCornerBlock = 1 << 16;
 // float converts to exactly, plus 0.0, is what VertexWelder compares: the same equality.)
 using CornerBits = std::array<std::uint32_t, 3>;
 
+// A corner as its partition holds it. Its hash is computed again where needed (counting,
+// placing, probing) rather than stored: a few multiplications against 8 more bytes a corner
+// in the weld's largest array.
 struct Record {
   std::uint32_t corner;
   CornerBits bits;
 };
 
-CornerBits corner_bits(const char* facets, std::uint64_t corner, bool& finite) {
-  float xyz[3];
-  std::memcpy(xyz, facets + corner / 3 * kFacetBytes + kCornerOffset + corner % 3 * 12, sizeof xyz);
+std::array<float, 3> corner_floats(const char* facets, std::uint64_t corner) {
+  std::array<float, 3> xyz;
+  std::memcpy(xyz.data(), facets + corner / 3 * kFacetBytes + kCornerOffset + corner % 3 * 12,
+              sizeof xyz);
+  return xyz;
+}
+
+CornerBits corner_bits(const std::array<float, 3>& xyz) {
   CornerBits bits;
-  for (int k = 0; k < 3; ++k) {
-    finite = finite && std::isfinite(xyz[k]);
-    bits[k] = std::bit_cast<std::uint32_t>(xyz[k] + 0.0f);
-  }
+  for (int k = 0; k < 3; ++k) bits[k] = std::bit_cast<std::uint32_t>(xyz[k] + 0.0f);
   return bits;
 }
 
-Vec3 corner_point(const char* facets, std::uint64_t corner) {
-  float xyz[3];
-  std::memcpy(xyz, facets + corner / 3 * kFacetBytes + kCornerOffset + corner % 3 * 12, sizeof xyz);
-  return {xyz[0], xyz[1], xyz[2]};
+bool is_finite(const std::array<float, 3>& xyz) {
+  return std::isfinite(xyz[0]) && std::isfinite(xyz[1]) && std::isfinite(xyz[2]);
 }
 
 std::uint64_t hash_bits(const CornerBits& bits) {
@@ -74,9 +77,9 @@ Partitioned partition_corners(const char* facets, std::uint64_t corners) {
   tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
     counts[b].fill(0);
     for (std::uint64_t c = b * kCornerBlock; c < block_end(b); ++c) {
-      bool finite = true;
-      ++counts[b][partition_of(hash_bits(corner_bits(facets, c, finite)))];
-      if (!finite && bad[b] == corners) bad[b] = c;
+      const std::array<float, 3> xyz = corner_floats(facets, c);
+      ++counts[b][partition_of(hash_bits(corner_bits(xyz)))];
+      if (!is_finite(xyz) && bad[b] == corners) bad[b] = c;
     }
   });
   Partitioned out;
@@ -99,8 +102,7 @@ Partitioned partition_corners(const char* facets, std::uint64_t corners) {
   out.records.resize(corners);
   tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
     for (std::uint64_t c = b * kCornerBlock; c < block_end(b); ++c) {
-      bool finite = true;
-      const CornerBits bits = corner_bits(facets, c, finite);
+      const CornerBits bits = corner_bits(corner_floats(facets, c));
       out.records[at[b][partition_of(hash_bits(bits))]++] = {static_cast<std::uint32_t>(c), bits};
     }
   });
@@ -161,7 +163,10 @@ WeldedFacets weld_binary_facets(const char* facets, std::uint64_t count) {
     for (int k = 0; k < 3; ++k) {
       const std::uint64_t c = 3 * t + k;
       mesh.triangles[t][k] = vertex[first[c]];
-      if (first[c] == c) mesh.vertices[vertex[c]] = corner_point(facets, c);
+      if (first[c] == c) {
+        const std::array<float, 3> xyz = corner_floats(facets, c);
+        mesh.vertices[vertex[c]] = Vec3(xyz[0], xyz[1], xyz[2]);
+      }
     }
   });
   return out;

@@ -43,7 +43,7 @@ std::uint32_t slot_high(const Mesh& mesh, std::uint32_t slot) {
 constexpr std::size_t kSlotChunks = 4;
 
 Buffer<std::uint64_t> slot_keys_by_low_vertex(const Mesh& mesh,
-                                              std::vector<std::uint32_t>& bucket_begin) {
+                                              Buffer<std::uint32_t>& bucket_begin) {
   const std::size_t vertices = mesh.vertex_count();
   const std::uint64_t slot_total = 3 * mesh.triangle_count();
   const auto chunk_slots = [&](std::size_t c, auto&& visit) {
@@ -52,22 +52,20 @@ Buffer<std::uint64_t> slot_keys_by_low_vertex(const Mesh& mesh,
       if (!repeats_vertex(mesh.triangles[s / 3])) visit(s);
     }
   };
-  // Per chunk, its slots per bucket; then where the chunk's slots of each bucket start.
+  // Per chunk, its slots per bucket; then, in place, where the chunk's slots of each bucket
+  // start.
   std::array<std::vector<std::uint32_t>, kSlotChunks> at;
   tbb::parallel_for(std::size_t{0}, kSlotChunks, [&](std::size_t c) {
     at[c].assign(vertices, 0);
     chunk_slots(c, [&](std::uint32_t s) { ++at[c][slot_low(mesh, s)]; });
   });
-  const Buffer<std::uint64_t> begin = block_offsets(vertices, [&](std::size_t v) {
-    std::uint64_t count = 0;
+  bucket_begin = block_offsets<std::uint32_t>(vertices, [&](std::size_t v) {
+    std::uint32_t count = 0;
     for (const auto& counts : at) count += counts[v];
     return count;
   });
-  bucket_begin.resize(vertices + 1);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices + 1, 1 << 14), [&](const auto& r) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 1 << 14), [&](const auto& r) {
     for (std::size_t v = r.begin(); v != r.end(); ++v) {
-      bucket_begin[v] = static_cast<std::uint32_t>(begin[v]);
-      if (v == vertices) continue;
       std::uint32_t next = bucket_begin[v];
       for (auto& counts : at) next += std::exchange(counts[v], next);
     }
@@ -292,7 +290,7 @@ bool is_degenerate_triangle(Vec3 a, Vec3 b, Vec3 c) {
 // Each vertex's bucket is sorted by high vertex and its runs (edges) counted in parallel;
 // the edges are then numbered bucket after bucket, as a serial pass would number them.
 EdgeIncidence build_edge_incidence(const Mesh& mesh) {
-  std::vector<std::uint32_t> bucket_begin;
+  Buffer<std::uint32_t> bucket_begin;
   Buffer<std::uint64_t> keys = slot_keys_by_low_vertex(mesh, bucket_begin);
   const auto starts_edge = [&](std::uint32_t i, std::size_t v) {
     return i == bucket_begin[v] || keys[i] >> 32 != keys[i - 1] >> 32;
