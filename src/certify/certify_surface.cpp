@@ -164,18 +164,17 @@ class Certifier {
           n >= 3 ? samples_.first_interior_sample[t] : samples_.vertex_sample[mesh.triangles[t][0]];
       return is_held(anchor);
     };
-    const std::size_t blocks = (mesh.triangle_count() + kCoveredBlock - 1) / kCoveredBlock;
-    std::vector<std::vector<std::uint32_t>> parts(blocks);
-    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-      const std::size_t end = std::min(mesh.triangle_count(), (b + 1) * kCoveredBlock);
-      for (std::size_t t = b * kCoveredBlock; t < end; ++t) {
-        if (covers(t)) parts[b].push_back(static_cast<std::uint32_t>(t));
-      }
-    });
-    std::size_t total = 0;
-    for (const auto& part : parts) total += part.size();
-    covered_.reserve(total);
-    for (const auto& part : parts) covered_.insert(covered_.end(), part.begin(), part.end());
+    using List = std::vector<std::uint32_t>;
+    covered_ = ordered_reduce(
+        mesh.triangle_count(), kCoveredBlock, List{},
+        [&](std::size_t begin, std::size_t end) {
+          List part;
+          for (std::size_t t = begin; t < end; ++t) {
+            if (covers(t)) part.push_back(static_cast<std::uint32_t>(t));
+          }
+          return part;
+        },
+        [](List& all, const List& part) { all.insert(all.end(), part.begin(), part.end()); });
   }
 
   Vec3 sample_normal(std::size_t t, std::uint32_t i, std::uint32_t j) const {
