@@ -12,6 +12,7 @@
 #include "render/error_mesh.hpp"
 #include "render/ply_writer.hpp"
 #include "statistics/statistics_report.hpp"
+#include "util/output_file.hpp"
 
 namespace {
 
@@ -27,8 +28,10 @@ void read_distances(ncv::Buffer<char> bytes) {
   std::ostringstream out;
   out << ncv::report_text(report) << ncv::report_json(report).dump() << ncv::report_csv_row(report);
   const ncv::ColorMap map = ncv::make_color_map(ncv::ColorMapKind::tolerance, {-1, 1}, tolerance);
-  ncv::error_ply(ncv::workpiece_error_mesh(set.samples, set.field.distance), map);
-  ncv::error_ply(ncv::lattice_error_mesh(set.samples, set.field.distance), map);
+  ncv::OutputFile ply("/dev/null", ncv::OutputKind::binary);
+  const ncv::ErrorMesh coarse = ncv::workpiece_error_mesh(set.samples, set.field.distance);
+  ncv::write_error_ply(ply, ncv::ErrorMeshPly(coarse), map);
+  ncv::write_error_ply(ply, ncv::LatticeMesh(set.samples, set.field.distance), map);
 }
 
 }  // namespace

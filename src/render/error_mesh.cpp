@@ -1,5 +1,6 @@
 #include "render/error_mesh.hpp"
 
+#include <algorithm>
 #include <limits>
 
 #include <fmt/format.h>
@@ -15,12 +16,24 @@ namespace ncv {
 namespace {
 
 constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
+constexpr std::uint64_t kFacesPerBlock = 1 << 12;
 
 std::uint32_t vertex_index(std::uint64_t sample) {
   return static_cast<std::uint32_t>(sample);
 }
 
 }  // namespace
+
+ErrorMeshPly::ErrorMeshPly(const ErrorMesh& mesh) : mesh_(mesh) {
+  const std::uint64_t faces = mesh.mesh.triangle_count();
+  for (std::uint64_t f = 0; f < faces; f += kFacesPerBlock) offsets_.push_back(f);
+  offsets_.push_back(faces);
+}
+
+void ErrorMeshPly::group_faces(std::size_t g, Triangle* out) const {
+  const auto begin = mesh_.mesh.triangles.begin() + static_cast<std::ptrdiff_t>(offsets_[g]);
+  std::copy(begin, begin + static_cast<std::ptrdiff_t>(offsets_[g + 1] - offsets_[g]), out);
+}
 
 ErrorMesh workpiece_error_mesh(const SampleSet& samples, std::span<const double> d,
                                std::span<const std::uint32_t> sample_region) {
@@ -36,8 +49,12 @@ ErrorMesh workpiece_error_mesh(const SampleSet& samples, std::span<const double>
   return out;
 }
 
-ErrorMesh lattice_error_mesh(const SampleSet& samples, std::span<const double> d,
-                             std::span<const std::uint32_t> sample_region) {
+LatticeMesh::LatticeMesh(const SampleSet& samples, std::span<const double> d,
+                         std::span<const std::uint32_t> sample_region)
+    : samples_(samples),
+      d_(d),
+      sample_region_(sample_region),
+      extra_vertex_(samples.mesh.vertex_count(), kNoSample) {
   // PLY face lists hold signed 32-bit vertex indices.
   if (samples.sample_count() + samples.mesh.vertex_count() >
       std::uint64_t{std::numeric_limits<std::int32_t>::max()}) {
@@ -46,48 +63,66 @@ ErrorMesh lattice_error_mesh(const SampleSet& samples, std::span<const double> d
                     "vertices instead of the lattice",
                     samples.sample_count()));
   }
-  ErrorMesh out{{std::vector<Vec3>(samples.positions.begin(), samples.positions.end()), {}},
-                std::vector<double>(d.begin(), d.end()),
-                sample_region.empty()
-                    ? std::vector<std::uint32_t>(d.size(), kNoRegion)
-                    : std::vector<std::uint32_t>(sample_region.begin(), sample_region.end())};
   const Mesh& workpiece = samples.mesh;
-  // A triangle without a lattice (scheme II) is drawn on its corners; those without a sample
-  // become vertices of their own, numbered in order of first use, before the faces are
-  // written in parallel, each triangle's at its offset.
-  const auto unsampled = [&](std::size_t t) { return samples.lattice_sizes[t] == 0; };
-  std::vector<std::uint32_t> extra_vertex(workpiece.vertex_count(), kNoSample);
   for (std::size_t t = 0; t < workpiece.triangle_count(); ++t) {
-    if (!unsampled(t)) continue;
+    if (samples.lattice_sizes[t] != 0) continue;
     for (const std::uint32_t v : workpiece.triangles[t]) {
-      if (samples.vertex_sample[v] != kNoSample || extra_vertex[v] != kNoSample) continue;
-      extra_vertex[v] = static_cast<std::uint32_t>(out.mesh.vertices.size());
-      out.mesh.vertices.push_back(workpiece.vertices[v]);
-      out.values.push_back(kNoValue);
-      out.regions.push_back(kNoRegion);
+      if (samples.vertex_sample[v] != kNoSample || extra_vertex_[v] != kNoSample) continue;
+      extra_vertex_[v] = static_cast<std::uint32_t>(samples.sample_count() + extra_.size());
+      extra_.push_back(v);
     }
   }
-  const auto corner_vertex = [&](std::uint32_t v) {
-    return samples.vertex_sample[v] != kNoSample ? samples.vertex_sample[v] : extra_vertex[v];
-  };
-  const Buffer<std::uint64_t> first = block_offsets(workpiece.triangle_count(), [&](std::size_t t) {
-    return unsampled(t) ? 1 : lattice_triangle_count(samples.lattice_sizes[t]);
+  first_face_ = block_offsets(workpiece.triangle_count(), [&](std::size_t t) {
+    const std::uint32_t n = samples.lattice_sizes[t];
+    return n == 0 ? 1 : lattice_triangle_count(n);
   });
+}
+
+PlyVertex LatticeMesh::vertex(std::uint64_t v) const {
+  if (v < samples_.sample_count()) {
+    return {samples_.positions[v], d_[v], sample_region_.empty() ? kNoRegion : sample_region_[v]};
+  }
+  return {samples_.mesh.vertices[extra_[v - samples_.sample_count()]], kNoValue, kNoRegion};
+}
+
+// An unsampled triangle (scheme II) on its corners, a sampled one as its sub-triangles.
+void LatticeMesh::group_faces(std::size_t t, Triangle* out) const {
+  if (samples_.lattice_sizes[t] == 0) {
+    const auto corner = [&](std::uint32_t v) {
+      return samples_.vertex_sample[v] != kNoSample ? samples_.vertex_sample[v] : extra_vertex_[v];
+    };
+    const Triangle& corners = samples_.mesh.triangles[t];
+    *out = {corner(corners[0]), corner(corners[1]), corner(corners[2])};
+    return;
+  }
+  for_each_lattice_triangle(samples_, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+    *out++ = {vertex_index(a), vertex_index(b), vertex_index(c)};
+  });
+}
+
+ErrorMesh lattice_error_mesh(const SampleSet& samples, std::span<const double> d,
+                             std::span<const std::uint32_t> sample_region) {
+  const LatticeMesh lattice(samples, d, sample_region);
+  const std::uint64_t vertices = lattice.vertex_count();
+  ErrorMesh out;
+  out.mesh.vertices.resize(vertices);
+  out.values.resize(vertices);
+  out.regions.resize(vertices);
+  tbb::parallel_for(tbb::blocked_range<std::uint64_t>(0, vertices, 1 << 14),
+                    [&](const auto& range) {
+                      for (std::uint64_t v = range.begin(); v != range.end(); ++v) {
+                        const PlyVertex vertex = lattice.vertex(v);
+                        out.mesh.vertices[v] = vertex.point;
+                        out.values[v] = vertex.value;
+                        out.regions[v] = vertex.region;
+                      }
+                    });
+  const std::span<const std::uint64_t> first = lattice.face_offsets();
   out.mesh.triangles.resize(first.back());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, workpiece.triangle_count(), 4096),
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, first.size() - 1, 4096),
                     [&](const auto& range) {
                       for (std::size_t t = range.begin(); t != range.end(); ++t) {
-                        Triangle* face = out.mesh.triangles.data() + first[t];
-                        if (unsampled(t)) {
-                          const Triangle& corners = workpiece.triangles[t];
-                          *face = {corner_vertex(corners[0]), corner_vertex(corners[1]),
-                                   corner_vertex(corners[2])};
-                          continue;
-                        }
-                        for_each_lattice_triangle(
-                            samples, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
-                              *face++ = {vertex_index(a), vertex_index(b), vertex_index(c)};
-                            });
+                        lattice.group_faces(t, out.mesh.triangles.data() + first[t]);
                       }
                     });
   return out;

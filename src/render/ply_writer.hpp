@@ -11,15 +11,17 @@
 #include <string>
 
 #include "render/color_map.hpp"
-#include "render/error_mesh.hpp"
-#include "util/buffer.hpp"
+#include "render/ply_mesh.hpp"
+#include "util/output_file.hpp"
 
 namespace ncv {
 
-// The whole file; its fixed-size vertex and face records are filled in parallel. comments
-// become header comment lines (line breaks replaced by blanks), followed by one describing
-// the colour map.
-Buffer<char> error_ply(const ErrorMesh& mesh, const ColorMap& map,
-                       std::span<const std::string> comments = {});
+// Writes the whole file to out (not committed). comments become header comment lines (line
+// breaks replaced by blanks), followed by one describing the colour map. The fixed-size
+// records are made in parallel a chunk of a few megabytes at a time and written before the
+// next: an image of the whole file was 64 MB of freshly faulted memory for each of the
+// finishing job's two PLYs, copied into the kernel from a cold buffer.
+void write_error_ply(OutputFile& out, const PlyMesh& mesh, const ColorMap& map,
+                     std::span<const std::string> comments = {});
 
 }  // namespace ncv

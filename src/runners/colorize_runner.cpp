@@ -46,31 +46,40 @@ ColorMap choose_color_map(const DistanceSet& distances, const ColorizeOptions& o
   return make_color_map(kind, range, options.tolerance);
 }
 
+namespace {
+
+// Without a given one, the regions are worked out from the tolerance, if there is one.
+std::span<const std::uint32_t> regions_of(const DistanceSet& distances,
+                                          const ColorizeOptions& options,
+                                          std::span<const std::uint32_t> sample_region,
+                                          RegionMap& worked_out) {
+  if (!sample_region.empty() || !options.tolerance) return sample_region;
+  worked_out = map_error_regions(distances.samples, distances.field.distance, *options.tolerance);
+  return worked_out.sample_region;
+}
+
+std::vector<std::string> ply_comments(const DistanceSet& distances,
+                                      const ColorizeOptions& options) {
+  return {fmt::format("ncverify {} {}: signed error of {} against {}", NCV_VERSION,
+                      name_of(kDirectionNames, distances.direction), distances.samples.source,
+                      distances.reference.source),
+          "positive = material left (excess), negative = gouge; units " + options.units,
+          "scalar_region = k: the k-th out-of-tolerance region of the report (0: none)"};
+}
+
+}  // namespace
+
 ColoredSurface colorize(const DistanceSet& distances, const ColorizeOptions& options,
                         std::span<const std::uint32_t> sample_region) {
   const ColorMap map = choose_color_map(distances, options);
   RegionMap regions;
-  if (sample_region.empty() && options.tolerance) {
-    regions = map_error_regions(distances.samples, distances.field.distance, *options.tolerance);
-    sample_region = regions.sample_region;
-  }
+  sample_region = regions_of(distances, options, sample_region, regions);
   const std::span<const double> d = distances.field.distance;
   return {map, options.coarse ? workpiece_error_mesh(distances.samples, d, sample_region)
                               : lattice_error_mesh(distances.samples, d, sample_region)};
 }
 
-Buffer<char> colored_ply(const ColoredSurface& colored, const DistanceSet& distances,
-                         const ColorizeOptions& options) {
-  const std::string comments[] = {
-      fmt::format("ncverify {} {}: signed error of {} against {}", NCV_VERSION,
-                  name_of(kDirectionNames, distances.direction), distances.samples.source,
-                  distances.reference.source),
-      "positive = material left (excess), negative = gouge; units " + options.units,
-      "scalar_region = k: the k-th out-of-tolerance region of the report (0: none)"};
-  return error_ply(colored.mesh, colored.map, comments);
-}
-
-std::string legend_svg(const ColoredSurface& colored, const DistanceSet& distances,
+std::string legend_svg(const ColorMap& map, const DistanceSet& distances,
                        const ColorizeOptions& options) {
   const bool forward = distances.direction == Direction::forward;
   const std::string workpiece = forward ? distances.samples.source : distances.reference.source;
@@ -79,27 +88,41 @@ std::string legend_svg(const ColoredSurface& colored, const DistanceSet& distanc
   const int decimals =
       number_style(bounding_box(distances.samples.mesh), options.units).length_decimals;
   std::ostringstream svg;
-  write_legend_svg(svg, colored.map, PictureText{part, options.units, decimals});
+  write_legend_svg(svg, map, PictureText{part, options.units, decimals});
   return svg.str();
 }
 
+// The PLY is streamed from the samples (the lattice) or the workpiece's error mesh (coarse).
 void write_colored(const DistanceSet& distances, const ColorizeOptions& options,
                    const std::string& ply_path, const std::string& legend_path,
                    std::span<const std::uint32_t> sample_region) {
-  const ColoredSurface colored = colorize(distances, options, sample_region);
-  const Buffer<char> ply = colored_ply(colored, distances, options);
+  const ColorMap map = choose_color_map(distances, options);
+  RegionMap regions;
+  sample_region = regions_of(distances, options, sample_region, regions);
+  const std::span<const double> d = distances.field.distance;
   OutputFile out(ply_path, OutputKind::binary);
   std::optional<OutputFile> legend;
   if (!legend_path.empty()) {
     legend.emplace(legend_path, OutputKind::text);
-    legend->write(legend_svg(colored, distances, options));
+    legend->write(legend_svg(map, distances, options));
   }
-  out.write(ply.data(), ply.size());
+  const std::vector<std::string> comments = ply_comments(distances, options);
+  std::uint64_t vertices = 0, faces = 0;
+  const auto write = [&](const PlyMesh& mesh) {
+    write_error_ply(out, mesh, map, comments);
+    vertices = mesh.vertex_count();
+    faces = mesh.face_offsets().back();
+  };
+  if (options.coarse) {
+    const ErrorMesh mesh = workpiece_error_mesh(distances.samples, d, sample_region);
+    write(ErrorMeshPly(mesh));
+  } else {
+    write(LatticeMesh(distances.samples, d, sample_region));
+  }
   out.commit();
   if (legend) legend->commit();
-  spdlog::info("wrote {} ({} vertices, {} faces, {})", out.display_name(),
-               colored.mesh.mesh.vertex_count(), colored.mesh.mesh.triangle_count(),
-               colored.map.description());
+  spdlog::info("wrote {} ({} vertices, {} faces, {})", out.display_name(), vertices, faces,
+               map.description());
 }
 
 void run_colorize(const ColorizeJob& job) {

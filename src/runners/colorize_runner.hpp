@@ -13,7 +13,6 @@
 #include "render/error_mesh.hpp"
 #include "statistics/tolerance.hpp"
 #include "statistics/value_range.hpp"
-#include "util/buffer.hpp"
 
 namespace ncv {
 
@@ -38,9 +37,7 @@ struct ColoredSurface {
 // the PLY's region property; empty: worked out here from the tolerance, if there is one.
 ColoredSurface colorize(const DistanceSet& distances, const ColorizeOptions& options,
                         std::span<const std::uint32_t> sample_region = {});
-Buffer<char> colored_ply(const ColoredSurface& colored, const DistanceSet& distances,
-                         const ColorizeOptions& options);
-std::string legend_svg(const ColoredSurface& colored, const DistanceSet& distances,
+std::string legend_svg(const ColorMap& map, const DistanceSet& distances,
                        const ColorizeOptions& options);
 
 // Writes the PLY (and the legend when `legend_svg` is not empty); both are opened before

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,7 @@
 #include "sampling/sampling.hpp"
 #include "statistics/error_regions.hpp"
 #include "stats_fixtures.hpp"
+#include "util/output_file.hpp"
 
 using ncv::ErrorMesh;
 using ncv::SampleSet;
@@ -68,16 +70,29 @@ std::int32_t int_at(const std::string& body, std::size_t offset) {
   return static_cast<std::int32_t>(u32_at(body, offset));
 }
 
-std::string to_ply(const ErrorMesh& mesh, const ncv::ColorMap& map) {
+fs::path temporary_ply() {
+  return fs::temp_directory_path() / ("ncverify-ply-test-" + std::to_string(::getpid()) + ".ply");
+}
+
+std::string to_ply(const ncv::PlyMesh& mesh, const ncv::ColorMap& map) {
   const std::vector<std::string> comments = {"ncverify test", "two\nlines"};
-  const ncv::Buffer<char> bytes = ncv::error_ply(mesh, map, comments);
-  return {bytes.begin(), bytes.end()};
+  const fs::path path = temporary_ply();
+  ncv::OutputFile out(path.string(), ncv::OutputKind::binary);
+  ncv::write_error_ply(out, mesh, map, comments);
+  out.commit();
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  fs::remove(path);
+  return bytes;
+}
+
+std::string to_ply(const ErrorMesh& mesh, const ncv::ColorMap& map) {
+  return to_ply(ncv::ErrorMeshPly(mesh), map);
 }
 
 // Reads the file back with OpenMesh, as MeshLab-style tools would.
 OpenMeshTriMesh read_back(const std::string& bytes) {
-  const fs::path path =
-      fs::temp_directory_path() / ("ncverify-ply-test-" + std::to_string(::getpid()) + ".ply");
+  const fs::path path = temporary_ply();
   std::ofstream(path, std::ios::binary) << bytes;
   OpenMeshTriMesh mesh;
   mesh.request_vertex_colors();
@@ -232,6 +247,35 @@ TEST_CASE("a PLY of many records is filled in parallel, every record in its plac
   const OpenMeshTriMesh read = read_back(bytes);
   CHECK(read.n_vertices() == mesh.mesh.vertex_count());
   CHECK(read.n_faces() == mesh.mesh.triangle_count());
+}
+
+TEST_CASE("the lattice read in place gives the PLY of its arrays, byte for byte", "[ply]") {
+  // Over 2^17 vertices and 2^18 faces, so that the writer takes several chunks of each; under
+  // scheme II with unsampled slivers, whose corners are vertices after the samples.
+  ncv::Mesh mesh = ncv::test::flat_grid(2, 1.0);
+  const std::uint32_t base = static_cast<std::uint32_t>(mesh.vertices.size());
+  for (std::uint32_t k = 0; k < 50; ++k) {
+    const double x = 1.0 + 0.001 * k;
+    mesh.vertices.push_back({x, 0.0, 0});
+    mesh.vertices.push_back({x + 0.001, 0.0, 0});
+    mesh.vertices.push_back({x, 0.0005, 0});
+    mesh.triangles.push_back({base + 3 * k, base + 3 * k + 1, base + 3 * k + 2});
+  }
+  for (const ncv::SamplingScheme scheme :
+       {ncv::SamplingScheme::all, ncv::SamplingScheme::paper_ii}) {
+    const SampleSet samples = ncv::sample_mesh(mesh, 0.0015, scheme);
+    const auto d = ncv::test::distances_of(samples, [](Vec3 p) { return p[0] * p[1] - 0.25; });
+    const ncv::Tolerance zone{-0.1, 0.1};
+    const ncv::RegionMap regions = ncv::map_error_regions(samples, d, zone);
+    const ncv::LatticeMesh lattice(samples, d, regions.sample_region);
+    REQUIRE(lattice.vertex_count() > std::uint64_t{3} << 17);
+    REQUIRE(lattice.face_offsets().back() > std::uint64_t{3} << 18);
+    if (scheme == ncv::SamplingScheme::paper_ii) {
+      REQUIRE(lattice.vertex_count() > samples.sample_count());
+    }
+    const std::string streamed = to_ply(lattice, kMap);
+    CHECK(streamed == to_ply(ncv::lattice_error_mesh(samples, d, regions.sample_region), kMap));
+  }
 }
 
 TEST_CASE("vertices without a sample are grey with NaN errors", "[ply]") {
