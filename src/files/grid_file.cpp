@@ -207,7 +207,8 @@ IndexedReference load_indexed_reference(const Container& c) {
   for (std::size_t cell = 0; cell < counts.size(); ++cell) {
     g.grid.cell_offsets[cell + 1] = g.grid.cell_offsets[cell] + counts[cell];
   }
-  g.grid.cell_triangles = c.get<std::uint32_t>("cell_triangles", c.count("/grid/references"));
+  g.grid.cell_triangles =
+      c.get<std::uint32_t, Buffer<std::uint32_t>>("cell_triangles", c.count("/grid/references"));
   g.grid.validate(*g.surface, c.source());
   return g;
 }

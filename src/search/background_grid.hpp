@@ -17,6 +17,7 @@
 
 #include "geometry/bounding_box.hpp"
 #include "reference/reference_surface.hpp"
+#include "util/buffer.hpp"
 
 namespace ncv {
 
@@ -31,8 +32,8 @@ struct BackgroundGrid {
   Vec3 origin{0, 0, 0};
   double cell_size = 0;
   std::array<std::uint32_t, 3> dims{0, 0, 0};
-  std::vector<std::uint64_t> cell_offsets;    // cell count + 1
-  std::vector<std::uint32_t> cell_triangles;  // triangle indices, grouped by cell
+  Buffer<std::uint64_t> cell_offsets;    // cell count + 1
+  Buffer<std::uint32_t> cell_triangles;  // triangle indices, grouped by cell
 
   // dims[0] * dims[1] * dims[2], or nothing when it does not fit 64 bits. A loader calls
   // this on the header before sizing cell_offsets.
