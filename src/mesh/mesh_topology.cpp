@@ -269,13 +269,20 @@ std::uint64_t count_duplicates(const Mesh& mesh, const EdgeIncidence& incidence)
 }
 
 // Relative to the bounding-box centre, so a part far from the origin loses no digits.
+// Each triangle's term in parallel, summed in triangle order on one thread, so that the
+// volume does not depend on the threads (the serial loop: 8.5 ms of the finishing workpiece's
+// topology).
 double signed_volume(const Mesh& mesh) {
   const Vec3 centre = bounding_box(mesh).center();
+  Buffer<double> terms(mesh.triangle_count());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, terms.size(), 1 << 14), [&](const auto& r) {
+    for (std::size_t t = r.begin(); t != r.end(); ++t) {
+      const Vec3 a = mesh.corner(t, 0) - centre;
+      terms[t] = dot(a, cross(mesh.corner(t, 1) - centre, mesh.corner(t, 2) - centre));
+    }
+  });
   double six_volume = 0;
-  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-    const Vec3 a = mesh.corner(t, 0) - centre;
-    six_volume += dot(a, cross(mesh.corner(t, 1) - centre, mesh.corner(t, 2) - centre));
-  }
+  for (const double term : terms) six_volume += term;
   return six_volume / 6;
 }
 

@@ -13,7 +13,7 @@ double lattice_triangle_area(const SampleSet& samples, std::size_t t) {
 }
 
 Buffer<LinearPatch> lattice_patches(const SampleSet& samples, std::span<const double> d,
-                                    std::vector<double>* triangle_areas) {
+                                    Buffer<double>* triangle_areas) {
   const std::size_t triangles = samples.lattice_sizes.size();
   const Buffer<std::uint64_t> first = block_offsets(
       triangles, [&](std::size_t t) { return lattice_triangle_count(samples.lattice_sizes[t]); });

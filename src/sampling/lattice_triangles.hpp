@@ -48,6 +48,6 @@ void for_each_lattice_triangle(const SampleSet& samples, std::size_t t, Visit&& 
 // once (no serial zero-fill first). With triangle_areas, each mesh triangle's area
 // (triangle_area) is kept there too, computed once for both.
 Buffer<LinearPatch> lattice_patches(const SampleSet& samples, std::span<const double> d,
-                                    std::vector<double>* triangle_areas = nullptr);
+                                    Buffer<double>* triangle_areas = nullptr);
 
 }  // namespace ncv

@@ -195,7 +195,7 @@ ErrorStatistics compute_error_statistics(const SampleSet& samples, std::span<con
   check_distances(samples, d);
   ErrorStatistics stats;
   stats.samples = d.size();
-  std::vector<double> triangle_areas;
+  Buffer<double> triangle_areas;
   const Buffer<LinearPatch> patches = lattice_patches(samples, d, &triangle_areas);
   count_triangles(samples, triangle_areas, stats);
   find_extremes(samples, d, stats);
