@@ -9,6 +9,7 @@
 #include "geometry/coordinate_limit.hpp"
 #include "util/error.hpp"
 #include "util/ordered_reduce.hpp"
+#include "util/serial_sum.hpp"
 
 namespace ncv {
 
@@ -22,9 +23,7 @@ double triangle_area(const Mesh& mesh, std::size_t triangle) {
 }
 
 double surface_area(const Mesh& mesh) {
-  double area = 0;
-  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) area += triangle_area(mesh, t);
-  return area;
+  return serial_sum(mesh.triangle_count(), [&](std::size_t t) { return triangle_area(mesh, t); });
 }
 
 // In blocks side by side, combined in block order: the box of a serial loop, to the sign of

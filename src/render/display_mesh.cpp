@@ -144,8 +144,8 @@ int value_class(double value, const std::optional<Tolerance>& tolerance) {
 // so the result does not depend on anything but the input.
 class VertexClusters {
  public:
-  VertexClusters(const ErrorMesh& coarse, const DisplayMeshInput& in)
-      : coarse_(coarse), in_(in), box_(bounding_box(coarse.mesh)) {
+  VertexClusters(const Mesh& mesh, const VertexErrors& errors, const DisplayMeshInput& in)
+      : mesh_(mesh), errors_(errors), in_(in), box_(bounding_box(mesh)) {
     const auto [lo, hi] = std::minmax_element(in.d.begin(), in.d.end());
     worst_ = {*lo, *hi};
     band_ = kLargestJump * (in.color_range.hi - in.color_range.lo);
@@ -155,7 +155,7 @@ class VertexClusters {
   // the first vertex of each found in an open-addressing table of vertex indices (with
   // std::unordered_map a clustering of the 626 k-vertex finishing part took 18-20 ms).
   std::vector<std::uint32_t> representatives(double cell) const {
-    const std::size_t count = coarse_.mesh.vertex_count();
+    const std::size_t count = mesh_.vertex_count();
     std::vector<std::uint64_t> keys(count);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 4096), [&](const auto& range) {
       for (std::size_t v = range.begin(); v != range.end(); ++v) {
@@ -184,13 +184,13 @@ class VertexClusters {
 
  private:
   std::uint64_t key(std::uint32_t v, double cell) const {
-    const double value = coarse_.values[v];
-    if (coarse_.regions[v] != kNoRegion || value == worst_[0] || value == worst_[1]) {
+    const double value = errors_.values[v];
+    if (errors_.regions[v] != kNoRegion || value == worst_[0] || value == worst_[1]) {
       return std::uint64_t{1} << 63 | v;
     }
     std::uint64_t key = 0;
     for (int axis = 0; axis < 3; ++axis) {
-      const double offset = (coarse_.mesh.vertices[v][axis] - box_.min[axis]) / cell;
+      const double offset = (mesh_.vertices[v][axis] - box_.min[axis]) / cell;
       key = key << 16 | (static_cast<std::uint64_t>(offset) & 0xffff);
     }
     const double band =
@@ -199,7 +199,8 @@ class VertexClusters {
     return key << 8 | (static_cast<std::uint64_t>(std::clamp(band, 0.0, 255.0)) & 0xff);
   }
 
-  const ErrorMesh& coarse_;
+  const Mesh& mesh_;
+  const VertexErrors& errors_;
   const DisplayMeshInput& in_;
   BoundingBox box_;
   std::array<double, 2> worst_{};
@@ -238,19 +239,21 @@ std::vector<Triangle> clustered_triangles(const Mesh& mesh, const std::vector<st
 // even surface, to the first size that meets the budget (or spans the part: what is left
 // is features). The size is searched by doubling the number of steps, then bisecting: the
 // features kept whole make the count fall slowly, and on the finishing part the 14 steps
-// one by one took 280 ms of the HTML page.
-ErrorMesh clustered(const ErrorMesh& coarse, const DisplayMeshInput& in, std::uint64_t budget) {
-  const VertexClusters clusters(coarse, in);
-  const double diagonal = bounding_box(coarse.mesh).diagonal();
-  std::vector<double> cells{std::max(
-      std::sqrt(2 * surface_area(coarse.mesh) / static_cast<double>(budget)), diagonal / 60000)};
+// one by one took 280 ms of the HTML page. The workpiece's mesh and its vertex errors are read
+// in place (a copy of the 1.25 M-triangle finishing part's mesh took 28 ms of its page).
+ErrorMesh clustered(const Mesh& mesh, const VertexErrors& errors, const DisplayMeshInput& in,
+                    std::uint64_t budget) {
+  const VertexClusters clusters(mesh, errors, in);
+  const double diagonal = bounding_box(mesh).diagonal();
+  std::vector<double> cells{
+      std::max(std::sqrt(2 * surface_area(mesh) / static_cast<double>(budget)), diagonal / 60000)};
   while (cells.back() < diagonal) cells.push_back(cells.back() * 1.25);
   std::vector<std::uint32_t> rep;
   std::size_t last = 0;  // the step rep is of
   const auto meets = [&](std::size_t step) {
     last = step;
     rep = clusters.representatives(cells[step]);
-    return surviving_count(coarse.mesh, rep) <= budget || step + 1 == cells.size();
+    return surviving_count(mesh, rep) <= budget || step + 1 == cells.size();
   };
   std::size_t over = 0, within = 0;  // a step over the budget (or none), one within it
   if (!meets(0)) {
@@ -263,16 +266,16 @@ ErrorMesh clustered(const ErrorMesh& coarse, const DisplayMeshInput& in, std::ui
     }
     if (last != within) meets(within);
   }
-  std::vector<Triangle> triangles = clustered_triangles(coarse.mesh, rep);
+  std::vector<Triangle> triangles = clustered_triangles(mesh, rep);
   ErrorMesh out;
-  std::vector<std::uint32_t> renumbered(coarse.mesh.vertex_count(), kNone);
+  std::vector<std::uint32_t> renumbered(mesh.vertex_count(), kNone);
   for (Triangle& t : triangles) {
     for (std::uint32_t& v : t) {
       if (renumbered[v] == kNone) {
         renumbered[v] = static_cast<std::uint32_t>(out.mesh.vertices.size());
-        out.mesh.vertices.push_back(coarse.mesh.vertices[v]);
-        out.values.push_back(coarse.values[v]);
-        out.regions.push_back(coarse.regions[v]);
+        out.mesh.vertices.push_back(mesh.vertices[v]);
+        out.values.push_back(errors.values[v]);
+        out.regions.push_back(errors.regions[v]);
       }
       v = renumbered[v];
     }
@@ -295,7 +298,7 @@ DisplayMesh make_display_mesh(const DisplayMeshInput& in, std::uint64_t budget) 
   }
   const std::uint64_t triangles = s.mesh.triangle_count();
   if (triangles > budget) {
-    display.mesh = clustered(workpiece_error_mesh(s, in.d, in.sample_region), in, budget);
+    display.mesh = clustered(s.mesh, vertex_errors(s, in.d, in.sample_region), in, budget);
     display.detail = DisplayDetail::clustered;
     return display;
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <utility>
 
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
@@ -35,18 +36,24 @@ void ErrorMeshPly::group_faces(std::size_t g, Triangle* out) const {
   std::copy(begin, begin + static_cast<std::ptrdiff_t>(offsets_[g + 1] - offsets_[g]), out);
 }
 
+VertexErrors vertex_errors(const SampleSet& samples, std::span<const double> d,
+                           std::span<const std::uint32_t> sample_region) {
+  const std::size_t vertices = samples.mesh.vertex_count();
+  VertexErrors out{std::vector<double>(vertices), std::vector<std::uint32_t>(vertices)};
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 1 << 14), [&](const auto& r) {
+    for (std::size_t v = r.begin(); v != r.end(); ++v) {
+      const std::uint32_t s = samples.vertex_sample[v];
+      out.values[v] = s == kNoSample ? kNoValue : d[s];
+      out.regions[v] = s == kNoSample || sample_region.empty() ? kNoRegion : sample_region[s];
+    }
+  });
+  return out;
+}
+
 ErrorMesh workpiece_error_mesh(const SampleSet& samples, std::span<const double> d,
                                std::span<const std::uint32_t> sample_region) {
-  const std::size_t vertices = samples.mesh.vertex_count();
-  ErrorMesh out{samples.mesh, std::vector<double>(vertices, kNoValue),
-                std::vector<std::uint32_t>(vertices, kNoRegion)};
-  for (std::size_t v = 0; v < vertices; ++v) {
-    const std::uint32_t s = samples.vertex_sample[v];
-    if (s == kNoSample) continue;
-    out.values[v] = d[s];
-    if (!sample_region.empty()) out.regions[v] = sample_region[s];
-  }
-  return out;
+  VertexErrors errors = vertex_errors(samples, d, sample_region);
+  return {samples.mesh, std::move(errors.values), std::move(errors.regions)};
 }
 
 LatticeMesh::LatticeMesh(const SampleSet& samples, std::span<const double> d,

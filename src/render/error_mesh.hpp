@@ -39,9 +39,18 @@ class ErrorMeshPly final : public PlyMesh {
 // sample_region (per sample, statistics/error_regions.hpp RegionMap) may be empty: no
 // vertex is in a region then.
 //
-// The workpiece mesh itself, each vertex with the distance of its sample. A vertex no
+// Each vertex of the sampled mesh with the distance and region of its sample. A vertex no
 // sampled triangle touches (scheme II) gets NaN: borrowing a value from elsewhere would
-// paint a measurement that was never made. Lattice points inside triangles are not shown.
+// paint a measurement that was never made.
+struct VertexErrors {
+  std::vector<double> values;
+  std::vector<std::uint32_t> regions;
+};
+VertexErrors vertex_errors(const SampleSet& samples, std::span<const double> d,
+                           std::span<const std::uint32_t> sample_region = {});
+
+// The workpiece mesh itself with its vertex errors. Lattice points inside triangles are not
+// shown.
 ErrorMesh workpiece_error_mesh(const SampleSet& samples, std::span<const double> d,
                                std::span<const std::uint32_t> sample_region = {});
 

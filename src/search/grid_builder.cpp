@@ -17,6 +17,7 @@
 #include "util/buffer.hpp"
 #include "util/error.hpp"
 #include "util/ordered_reduce.hpp"
+#include "util/serial_sum.hpp"
 
 namespace ncv {
 namespace {
@@ -312,21 +313,12 @@ void summarise(const BackgroundGrid& grid, std::size_t triangles, GridStatistics
 
 }  // namespace
 
-// The triangles' areas in parallel, summed in triangle order on one thread, so that the cell
-// size does not depend on the threads (the serial loop took 13-17 ms of the finishing
-// workpiece's grid).
 double default_cell_size(const ReferenceSurface& nominal) {
   const std::span<const TriangleCorners> corners = nominal.corners();
-  Buffer<double> areas(corners.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, corners.size(), 1 << 14),
-                    [&](const auto& r) {
-                      for (std::size_t k = r.begin(); k != r.end(); ++k) {
-                        const TriangleCorners& t = corners[k];
-                        areas[k] = 0.5 * norm(cross(t[1] - t[0], t[2] - t[0]));
-                      }
-                    });
-  double area = 0;
-  for (const double a : areas) area += a;
+  const double area = serial_sum(corners.size(), [&](std::size_t k) {
+    const TriangleCorners& t = corners[k];
+    return 0.5 * norm(cross(t[1] - t[0], t[2] - t[0]));
+  });
   const auto triangles = static_cast<double>(nominal.triangle_count());
   const double mean_area = area / triangles;
   if (mean_area > 0) return std::sqrt(4.0 * mean_area / std::sqrt(3.0));
