@@ -25,14 +25,16 @@ std::uint32_t vertex_index(std::uint64_t sample) {
 
 }  // namespace
 
-ErrorMeshPly::ErrorMeshPly(const ErrorMesh& mesh) : mesh_(mesh) {
-  const std::uint64_t faces = mesh.mesh.triangle_count();
+ErrorMeshPly::ErrorMeshPly(const Mesh& mesh, std::span<const double> values,
+                           std::span<const std::uint32_t> regions)
+    : mesh_(mesh), values_(values), regions_(regions) {
+  const std::uint64_t faces = mesh.triangle_count();
   for (std::uint64_t f = 0; f < faces; f += kFacesPerBlock) offsets_.push_back(f);
   offsets_.push_back(faces);
 }
 
 void ErrorMeshPly::group_faces(std::size_t g, Triangle* out) const {
-  const auto begin = mesh_.mesh.triangles.begin() + static_cast<std::ptrdiff_t>(offsets_[g]);
+  const auto begin = mesh_.triangles.begin() + static_cast<std::ptrdiff_t>(offsets_[g]);
   std::copy(begin, begin + static_cast<std::ptrdiff_t>(offsets_[g + 1] - offsets_[g]), out);
 }
 

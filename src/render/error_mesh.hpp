@@ -20,19 +20,25 @@ struct ErrorMesh {
                                        // the report's k-th region), kNoRegion elsewhere
 };
 
-// An ErrorMesh as the PLY writer reads it: its faces in blocks.
+// A mesh and its per-vertex values and regions as the PLY writer reads them, in place: its
+// faces in blocks.
 class ErrorMeshPly final : public PlyMesh {
  public:
-  explicit ErrorMeshPly(const ErrorMesh& mesh);
-  std::uint64_t vertex_count() const override { return mesh_.mesh.vertex_count(); }
+  ErrorMeshPly(const Mesh& mesh, std::span<const double> values,
+               std::span<const std::uint32_t> regions);
+  explicit ErrorMeshPly(const ErrorMesh& mesh)
+      : ErrorMeshPly(mesh.mesh, mesh.values, mesh.regions) {}
+  std::uint64_t vertex_count() const override { return mesh_.vertex_count(); }
   PlyVertex vertex(std::uint64_t v) const override {
-    return {mesh_.mesh.vertices[v], mesh_.values[v], mesh_.regions[v]};
+    return {mesh_.vertices[v], values_[v], regions_[v]};
   }
   std::span<const std::uint64_t> face_offsets() const override { return offsets_; }
   void group_faces(std::size_t g, Triangle* out) const override;
 
  private:
-  const ErrorMesh& mesh_;
+  const Mesh& mesh_;
+  std::span<const double> values_;
+  std::span<const std::uint32_t> regions_;
   std::vector<std::uint64_t> offsets_;
 };
 

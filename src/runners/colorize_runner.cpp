@@ -92,7 +92,8 @@ std::string legend_svg(const ColorMap& map, const DistanceSet& distances,
   return svg.str();
 }
 
-// The PLY is streamed from the samples (the lattice) or the workpiece's error mesh (coarse).
+// The PLY is streamed from the samples (the lattice) or the workpiece's mesh and its vertex
+// errors (coarse), read in place.
 void write_colored(const DistanceSet& distances, const ColorizeOptions& options,
                    const std::string& ply_path, const std::string& legend_path,
                    std::span<const std::uint32_t> sample_region) {
@@ -114,8 +115,8 @@ void write_colored(const DistanceSet& distances, const ColorizeOptions& options,
     faces = mesh.face_offsets().back();
   };
   if (options.coarse) {
-    const ErrorMesh mesh = workpiece_error_mesh(distances.samples, d, sample_region);
-    write(ErrorMeshPly(mesh));
+    const VertexErrors errors = vertex_errors(distances.samples, d, sample_region);
+    write(ErrorMeshPly(distances.samples.mesh, errors.values, errors.regions));
   } else {
     write(LatticeMesh(distances.samples, d, sample_region));
   }
