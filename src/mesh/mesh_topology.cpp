@@ -12,6 +12,7 @@
 #include <tbb/parallel_reduce.h>
 
 #include "util/block_offsets.hpp"
+#include "util/bucket_positions.hpp"
 #include "util/buffer.hpp"
 #include "util/ordered_reduce.hpp"
 #include "util/serial_sum.hpp"
@@ -39,8 +40,8 @@ std::uint32_t slot_high(const Mesh& mesh, std::uint32_t slot) {
 // Slots of usable triangles as keys (higher vertex << 32 | slot), bucketed by lower vertex
 // (counting sort keeps slot order). Sorting a bucket's keys orders its slots by higher
 // vertex, then by slot, without reading the mesh again. The sort runs on a fixed number of
-// chunks of slots side by side: each counts its slots per bucket, then writes them after the
-// earlier chunks' in each bucket, so the keys are the serial sort's whatever the threads.
+// chunks of slots side by side (BucketPositions): the keys are the serial sort's whatever the
+// threads.
 constexpr std::size_t kSlotChunks = 4;
 
 Buffer<std::uint64_t> slot_keys_by_low_vertex(const Mesh& mesh,
@@ -53,30 +54,16 @@ Buffer<std::uint64_t> slot_keys_by_low_vertex(const Mesh& mesh,
       if (!repeats_vertex(mesh.triangles[s / 3])) visit(s);
     }
   };
-  // Per chunk, its slots per bucket; then, in place, where the chunk's slots of each bucket
-  // start.
-  std::array<std::vector<std::uint32_t>, kSlotChunks> at;
-  tbb::parallel_for(std::size_t{0}, kSlotChunks, [&](std::size_t c) {
-    at[c].assign(vertices, 0);
-    chunk_slots(c, [&](std::uint32_t s) { ++at[c][slot_low(mesh, s)]; });
+  BucketPositions<std::uint32_t, kSlotChunks> positions(vertices, [&](std::size_t c, auto&& emit) {
+    chunk_slots(c, [&](std::uint32_t s) { emit(slot_low(mesh, s)); });
   });
-  bucket_begin = block_offsets<std::uint32_t>(vertices, [&](std::size_t v) {
-    std::uint32_t count = 0;
-    for (const auto& counts : at) count += counts[v];
-    return count;
-  });
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 1 << 14), [&](const auto& r) {
-    for (std::size_t v = r.begin(); v != r.end(); ++v) {
-      std::uint32_t next = bucket_begin[v];
-      for (auto& counts : at) next += std::exchange(counts[v], next);
-    }
-  });
-  Buffer<std::uint64_t> keys(bucket_begin.back());
+  Buffer<std::uint64_t> keys(positions.starts().back());
   tbb::parallel_for(std::size_t{0}, kSlotChunks, [&](std::size_t c) {
     chunk_slots(c, [&](std::uint32_t s) {
-      keys[at[c][slot_low(mesh, s)]++] = std::uint64_t{slot_high(mesh, s)} << 32 | s;
+      keys[positions.next(c, slot_low(mesh, s))] = std::uint64_t{slot_high(mesh, s)} << 32 | s;
     });
   });
+  bucket_begin = positions.take_starts();
   return keys;
 }
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <numeric>
+#include <limits>
 #include <optional>
 #include <span>
 #include <utility>
@@ -13,8 +13,7 @@
 #include <tbb/parallel_for.h>
 
 #include "geometry/triangle_box_overlap.hpp"
-#include "util/block_offsets.hpp"
-#include "util/buffer.hpp"
+#include "util/bucket_positions.hpp"
 #include "util/error.hpp"
 #include "util/ordered_reduce.hpp"
 #include "util/serial_sum.hpp"
@@ -233,50 +232,35 @@ std::optional<std::vector<ReferenceChunk>> touched_cells(const ReferenceSurface&
   return chunks;
 }
 
-// Counting sort of the references by cell, each cell's list in triangle order: the chunks
-// fall into kSortGroups fixed groups that run side by side, each counting its references per
-// cell, then placing them after the earlier groups' in each cell, so the lists are the serial
-// sort's whatever the threads (one serial pass took 23-31 ms of the finishing workpiece's
-// grid, 2.4 M references into 2.6 M cells).
+// Counting sort of the references by cell, each cell's list in triangle order, the chunks in
+// kSortGroups fixed groups side by side (BucketPositions; one serial pass took 23-31 ms of the
+// finishing workpiece's grid, 2.4 M references into 2.6 M cells).
 constexpr std::size_t kSortGroups = 2;
 
 void fill_cell_lists(BackgroundGrid& grid, const std::vector<ReferenceChunk>& chunks) {
-  const std::uint64_t cells = grid.cell_count();
-  const auto first_chunk = [&](std::size_t g) { return chunks.size() * g / kSortGroups; };
-  // Per group, its references per cell; then where its references start within each cell
-  // (a cell holds each triangle once: fewer than 2^32).
-  std::array<Buffer<std::uint32_t>, kSortGroups> at;
-  tbb::parallel_for(std::size_t{0}, kSortGroups, [&](std::size_t g) {
-    at[g].assign(cells, 0);
-    for (std::size_t c = first_chunk(g); c < first_chunk(g + 1); ++c) {
-      for (const std::uint32_t cell : chunks[c].cells) ++at[g][cell];
-    }
-  });
-  grid.cell_offsets = block_offsets(cells, [&](std::uint64_t cell) {
-    std::uint64_t count = 0;
-    for (const auto& counts : at) count += counts[cell];
-    return count;
-  });
-  tbb::parallel_for(tbb::blocked_range<std::uint64_t>(0, cells, 1 << 14), [&](const auto& r) {
-    for (std::uint64_t cell = r.begin(); cell != r.end(); ++cell) {
-      std::uint32_t next = 0;
-      for (auto& counts : at) next += std::exchange(counts[cell], next);
-    }
-  });
-  grid.cell_triangles.resize(grid.cell_offsets.back());
-  tbb::parallel_for(std::size_t{0}, kSortGroups, [&](std::size_t g) {
-    for (std::size_t c = first_chunk(g); c < first_chunk(g + 1); ++c) {
+  // visit(cell, triangle) for every reference of group g's chunks, in triangle order.
+  const auto for_each_reference = [&](std::size_t g, auto&& visit) {
+    for (std::size_t c = chunks.size() * g / kSortGroups; c < chunks.size() * (g + 1) / kSortGroups;
+         ++c) {
       auto t = static_cast<std::uint32_t>(c * kChunkTriangles);
       std::size_t r = 0;
       for (const std::uint32_t count : chunks[c].counts) {
-        for (std::uint32_t k = 0; k < count; ++k, ++r) {
-          const std::uint32_t cell = chunks[c].cells[r];
-          grid.cell_triangles[grid.cell_offsets[cell] + at[g][cell]++] = t;
-        }
+        for (std::uint32_t k = 0; k < count; ++k, ++r) visit(chunks[c].cells[r], t);
         ++t;
       }
     }
+  };
+  BucketPositions<std::uint64_t, kSortGroups> positions(
+      grid.cell_count(), [&](std::size_t g, auto&& emit) {
+        for_each_reference(g, [&](std::uint32_t cell, std::uint32_t) { emit(cell); });
+      });
+  grid.cell_triangles.resize(positions.starts().back());
+  tbb::parallel_for(std::size_t{0}, kSortGroups, [&](std::size_t g) {
+    for_each_reference(g, [&](std::uint32_t cell, std::uint32_t t) {
+      grid.cell_triangles[positions.next(g, cell)] = t;
+    });
   });
+  grid.cell_offsets = positions.take_starts();
 }
 
 struct CellSizes {
