@@ -33,12 +33,51 @@ Vec3 face_normal(Vec3 a, Vec3 b, Vec3 c) {
   return is_degenerate_triangle(a, b, c) ? Vec3(0, 0, 0) : normalized(cross(b - a, c - a));
 }
 
-// One face's share of a vertex pseudonormal.
-struct Term {
-  int face;
-  Vec3 value;
+// A vertex's terms (one face's share each) added in ascending face order from zero, as the
+// arrays' triangle-order loop adds them. A vertex has a handful of faces: their terms on the
+// stack, the rare crowded vertex's on the heap (an allocation per vertex cost as much as the
+// sums).
+class VertexTerms {
+ public:
+  void add(std::size_t face, Vec3 value) {
+    if (count_ == stack_.size()) heap_.assign(stack_.begin(), stack_.end());
+    if (count_ >= stack_.size()) {
+      heap_.push_back({face, value});
+    } else {
+      stack_[count_] = {face, value};
+    }
+    ++count_;
+  }
+
+  Vec3 normalized_sum() {
+    const std::span<Term> terms =
+        count_ > stack_.size() ? std::span<Term>(heap_) : std::span<Term>(stack_.data(), count_);
+    std::sort(terms.begin(), terms.end(),
+              [](const Term& a, const Term& b) { return a.face < b.face; });
+    Vec3 sum(0, 0, 0);
+    for (const Term& term : terms) sum += term.value;
+    return normalized(sum);
+  }
+
+ private:
+  struct Term {
+    std::size_t face;
+    Vec3 value;
+  };
+  std::array<Term, 16> stack_;
+  std::vector<Term> heap_;
+  std::size_t count_ = 0;
 };
-constexpr std::size_t kStackTerms = 16;
+
+// An edge's faces' normals added in slot order (ascending faces) from zero.
+Vec3 edge_sum(const EdgeIncidence& incidence, std::span<const Vec3> faces, std::size_t e) {
+  Vec3 sum(0, 0, 0);
+  for (std::uint32_t i = incidence.edge_begin[e]; i < incidence.edge_begin[e + 1]; ++i) {
+    const Vec3 n = faces[incidence.slots[i] / 3];
+    if (!is_zero(n)) sum += n;
+  }
+  return normalized(sum);
+}
 
 void normalize_all(std::vector<Vec3>& vectors) {
   parallel_over(vectors.size(), 1 << 14,
@@ -84,11 +123,7 @@ Pseudonormals halfedge_pseudonormals(const TriMesh& mesh, const EdgeIncidence& i
   normals.vertex.resize(mesh.n_vertices());
   parallel_over(mesh.n_vertices(), 1 << 12, [&](std::size_t v) {
     const auto vertex = TriMesh::VertexHandle(static_cast<int>(v));
-    // A vertex has a handful of faces: their terms on the stack, the rare crowded vertex on
-    // the heap (an allocation per vertex cost as much as the sums).
-    std::array<Term, kStackTerms> stack_terms;
-    std::vector<Term> heap_terms;
-    std::size_t count = 0;
+    VertexTerms terms;
     // Around the vertex by hand (clockwise: after outgoing h comes next(opposite(h))), the
     // step count bounded so that no structure can loop forever.
     const TriMesh::HalfedgeHandle first = mesh.halfedge_handle(vertex);
@@ -96,26 +131,13 @@ Pseudonormals halfedge_pseudonormals(const TriMesh& mesh, const EdgeIncidence& i
     for (std::size_t steps = 0; first.is_valid() && steps < mesh.n_halfedges(); ++steps) {
       const int face = mesh.face_handle(h).idx();
       if (face >= 0 && !is_zero(normals.face[static_cast<std::size_t>(face)])) {
-        const Term term{face, angle_at[static_cast<std::size_t>(h.idx())] *
-                                  normals.face[static_cast<std::size_t>(face)]};
-        if (count == kStackTerms) heap_terms.assign(stack_terms.begin(), stack_terms.end());
-        if (count >= kStackTerms) {
-          heap_terms.push_back(term);
-        } else {
-          stack_terms[count] = term;
-        }
-        ++count;
+        const auto f = static_cast<std::size_t>(face);
+        terms.add(f, angle_at[static_cast<std::size_t>(h.idx())] * normals.face[f]);
       }
       h = mesh.next_halfedge_handle(mesh.opposite_halfedge_handle(h));
       if (h == first) break;
     }
-    const std::span<Term> terms = count > kStackTerms ? std::span<Term>(heap_terms)
-                                                      : std::span<Term>(stack_terms.data(), count);
-    std::sort(terms.begin(), terms.end(),
-              [](const Term& a, const Term& b) { return a.face < b.face; });
-    Vec3 sum(0, 0, 0);
-    for (const Term& term : terms) sum += term.value;
-    normals.vertex[v] = normalized(sum);
+    normals.vertex[v] = terms.normalized_sum();
   });
 
   normals.edge.resize(mesh.n_edges());
@@ -163,16 +185,54 @@ Pseudonormals array_pseudonormals(const Mesh& mesh, std::span<const TriangleCorn
   }
   normalize_all(normals.vertex);
   normals.edge.resize(incidence.edge_count());
-  parallel_over(incidence.edge_count(), 1 << 14, [&](std::size_t e) {
-    Vec3 sum(0, 0, 0);
-    for (std::uint32_t i = incidence.edge_begin[e]; i < incidence.edge_begin[e + 1]; ++i) {
-      const Vec3 n = normals.face[incidence.slots[i] / 3];
-      if (!is_zero(n)) sum += n;
-    }
-    normals.edge[e] = normalized(sum);
-  });
+  parallel_over(incidence.edge_count(), 1 << 14,
+                [&](std::size_t e) { normals.edge[e] = edge_sum(incidence, normals.face, e); });
   normals.edge_of_slot = std::move(incidence.edge_of_slot);
   return normals;
+}
+
+bool fans_walkable(const Mesh& mesh, const TopologyReport& topology) {
+  if (!topology.closed() || !topology.manifold()) return false;
+  return std::none_of(mesh.triangles.begin(), mesh.triangles.end(), [](const Triangle& t) {
+    return t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
+  });
+}
+
+// Around the vertex from `triangle` across one edge after another (each on exactly two
+// triangles) until back at `triangle`: its one fan, so every face it has. The step count is
+// bounded so that no structure can loop forever.
+Vec3 FanPseudonormals::vertex(const Mesh& mesh, std::span<const TriangleCorners> corners,
+                              std::span<const Vec3> faces, std::size_t triangle, int k) const {
+  const std::uint32_t v = mesh.triangles[triangle][static_cast<std::size_t>(k)];
+  VertexTerms terms;
+  std::size_t t = triangle;
+  // The slot of t along which the walk leaves it: first the one starting at v.
+  std::uint32_t out = static_cast<std::uint32_t>(3 * triangle) + static_cast<std::uint32_t>(k);
+  for (std::size_t steps = 0; steps < incidence_.slots.size(); ++steps) {
+    const Triangle& tri = mesh.triangles[t];
+    const int corner = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+    if (!is_zero(faces[t])) {
+      const auto& c = corners[t];
+      const auto at = [&](int i) { return c[static_cast<std::size_t>((corner + i) % 3)]; };
+      terms.add(t, corner_angle(at(0), at(1), at(2)) * faces[t]);
+    }
+    const std::uint32_t e = incidence_.edge_of_slot[out];
+    const std::uint32_t first = incidence_.slots[incidence_.edge_begin[e]];
+    const std::uint32_t in = first == out ? incidence_.slots[incidence_.edge_begin[e] + 1] : first;
+    t = in / 3;
+    if (t == triangle) break;
+    // The next triangle's other slot at v: v starts slot c and ends slot c + 2 (mod 3).
+    const Triangle& next = mesh.triangles[t];
+    const std::uint32_t c = next[0] == v ? 0 : next[1] == v ? 1 : 2;
+    const std::uint32_t starting = static_cast<std::uint32_t>(3 * t) + c;
+    out = in == starting ? static_cast<std::uint32_t>(3 * t) + (c + 2) % 3 : starting;
+  }
+  return terms.normalized_sum();
+}
+
+Vec3 FanPseudonormals::edge(std::span<const Vec3> faces, std::size_t triangle, int k) const {
+  const std::uint32_t e = incidence_.edge_of_slot[3 * triangle + static_cast<std::size_t>(k)];
+  return e == kNoEdge ? Vec3(0, 0, 0) : edge_sum(incidence_, faces, e);
 }
 
 }  // namespace ncv

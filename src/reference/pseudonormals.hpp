@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "geometry/closest_point.hpp"
@@ -43,5 +44,31 @@ Pseudonormals halfedge_pseudonormals(const TriMesh& mesh, const EdgeIncidence& i
 // (its edge_of_slot becomes the result's).
 Pseudonormals array_pseudonormals(const Mesh& mesh, std::span<const TriangleCorners> corners,
                                   EdgeIncidence incidence);
+
+// True when every vertex's pseudonormal can be found by walking around it (FanPseudonormals):
+// every edge on two triangles, one fan of triangles at every vertex, no triangle that repeats
+// a corner (it has no edges to walk across).
+bool fans_walkable(const Mesh& mesh, const TopologyReport& topology);
+
+// The arrays' pseudonormals of a surface whose fans are walkable, each worked out when it is
+// asked for rather than all up front: signing asks for few (the finishing workpiece, measured
+// from the nominal's 1.22 M samples: 0.1 % of them end on a vertex, 7 % on an edge), and the
+// up-front way spent most of its 0.11 s in the 3.7 M corner angles. The values are the
+// arrays' (array_pseudonormals) to the bit: a vertex's terms are gathered around its fan and
+// added in ascending face order from zero, an edge's over its slots, as there.
+class FanPseudonormals {
+ public:
+  // `incidence` of the mesh whose faces' normals are passed to the queries below.
+  explicit FanPseudonormals(EdgeIncidence incidence) : incidence_(std::move(incidence)) {}
+
+  // At corner k of `triangle`; `mesh`, `corners` and `faces` (face normals) are the surface's.
+  Vec3 vertex(const Mesh& mesh, std::span<const TriangleCorners> corners,
+              std::span<const Vec3> faces, std::size_t triangle, int k) const;
+  // Along slot k of `triangle` (from its corner k to the next).
+  Vec3 edge(std::span<const Vec3> faces, std::size_t triangle, int k) const;
+
+ private:
+  EdgeIncidence incidence_;
+};
 
 }  // namespace ncv

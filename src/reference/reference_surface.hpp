@@ -23,11 +23,15 @@
 // it is closed, its boundary loops, its face normals and its pseudonormals
 // (pseudonormals.hpp) come from its halfedge structure. One it cannot hold is detected on the
 // plain arrays (analyse_topology) and signed by the winding number; its pseudonormals (for an
-// explicit --sign pseudonormal) come from the arrays. A grid file stores the results of a
-// surface held on halfedges, so one read back (StoredSurface) rebuilds none of them.
+// explicit --sign pseudonormal) come from the arrays. On the arrays, a surface whose fans can
+// be walked (fans_walkable: the reverse direction's workpiece, as a rule) has its face normals
+// made up front and its vertices' and edges' pseudonormals worked out around their fans when
+// asked (FanPseudonormals), the same values. A grid file stores the results of a surface held
+// on halfedges, so one read back (StoredSurface) rebuilds none of them.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -95,6 +99,7 @@ class ReferenceSurface {
   // a grid file: the first 100 of them); their number.
   const std::vector<BoundaryLoop>& boundary_loops() const { return boundary_loops_; }
   std::uint64_t boundary_loop_count() const { return boundary_loop_count_; }
+  // Vertices' and edges' empty when they come from their fans (fans_walkable).
   const Pseudonormals& normals() const { return normals_; }
   bool flipped() const { return flipped_; }
   // SignMethod::pseudonormal or SignMethod::winding, and why when winding.
@@ -125,7 +130,10 @@ class ReferenceSurface {
   bool on_halfedges_ = false;
   std::vector<BoundaryLoop> boundary_loops_;
   std::uint64_t boundary_loop_count_ = 0;
+  // The face normals only, when the vertices' and edges' come from their fans (on the
+  // arrays, fans_walkable).
   Pseudonormals normals_;
+  std::optional<FanPseudonormals> fans_;
 };
 
 }  // namespace ncv

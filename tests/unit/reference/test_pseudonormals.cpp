@@ -1,6 +1,11 @@
-// Pseudonormals on OpenMesh's halfedges and on the plain arrays: the same values to the bit,
-// and a surface held on halfedges wherever OpenMesh can hold it.
+// Pseudonormals on OpenMesh's halfedges, on the plain arrays and around the arrays' fans: the
+// same values to the bit, and a surface held on halfedges wherever OpenMesh can hold it.
 #include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
 
 #include <tbb/global_control.h>
 
@@ -29,7 +34,112 @@ void check_bit_identical(const ncv::Mesh& mesh) {
   }
 }
 
+// Every vertex's and edge's pseudonormal found around its fan is the arrays' up-front one.
+void check_fans_agree(const ncv::Mesh& mesh) {
+  const ncv::EdgeIncidence incidence = ncv::build_edge_incidence(mesh);
+  REQUIRE(ncv::fans_walkable(mesh, ncv::analyse_topology(mesh, incidence)));
+  const std::vector<ncv::TriangleCorners> corners = fx::corners_of(mesh);
+  const ncv::Pseudonormals arrays = ncv::array_pseudonormals(mesh, corners, incidence);
+  const ncv::FanPseudonormals fans(incidence);
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      CHECK(fans.vertex(mesh, corners, arrays.face, t, k) == arrays.vertex[mesh.triangles[t][k]]);
+      const std::uint32_t e = arrays.edge_of_slot[3 * t + static_cast<std::size_t>(k)];
+      CHECK(fans.edge(arrays.face, t, k) ==
+            (e == ncv::kNoEdge ? ncv::Vec3(0, 0, 0) : arrays.edge[e]));
+    }
+  }
+}
+
+// Two apexes joined to a ring of n points: a vertex on n faces at each apex.
+ncv::Mesh bipyramid(int n) {
+  ncv::Mesh mesh;
+  mesh.vertices = {{0, 0, 1}, {0, 0, -1}};
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * std::numbers::pi * i / n;
+    mesh.vertices.push_back({std::cos(a), std::sin(a), 0.1 * (i % 3)});
+  }
+  for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(n); ++i) {
+    const std::uint32_t a = 2 + i, b = 2 + (i + 1) % static_cast<std::uint32_t>(n);
+    mesh.triangles.push_back({0, a, b});
+    mesh.triangles.push_back({1, b, a});
+  }
+  return mesh;
+}
+
 }  // namespace
+
+TEST_CASE("pseudonormals: around the fans as the arrays give them, to the bit", "[pseudonormals]") {
+  check_fans_agree(fx::box({0, 0, 0}, {1, 2, 3}));
+  check_fans_agree(fx::torus(40, 10, 60, 30));
+  check_fans_agree(fx::flipped(fx::torus(40, 10, 60, 30)));
+  check_fans_agree(fx::pocketed_block().mesh(0.7));
+  check_fans_agree(bipyramid(7));
+  check_fans_agree(bipyramid(41));  // more faces at a vertex than the walk keeps on the stack
+  // Shuffled: the fan meets the faces out of order, the sums add them in order.
+  ncv::Mesh shuffled = fx::torus(40, 10, 60, 30);
+  std::mt19937_64 rng(7);
+  std::shuffle(shuffled.triangles.begin(), shuffled.triangles.end(), rng);
+  check_fans_agree(shuffled);
+  ncv::Mesh degenerate = fx::torus(40, 10, 60, 30);
+  degenerate.vertices[3] = degenerate.vertices[4];  // faces with no normal: no vote
+  check_fans_agree(degenerate);
+}
+
+TEST_CASE("pseudonormals: fans walkable only on a closed surface with one fan a vertex",
+          "[pseudonormals]") {
+  const auto walkable = [](const ncv::Mesh& mesh) {
+    return ncv::fans_walkable(mesh, ncv::analyse_topology(mesh, ncv::build_edge_incidence(mesh)));
+  };
+  CHECK(walkable(fx::box({0, 0, 0}, {1, 1, 1})));
+  ncv::Mesh open = fx::box({0, 0, 0}, {1, 1, 1});
+  open.triangles.pop_back();
+  CHECK_FALSE(walkable(open));
+  ncv::Mesh fin = fx::box({0, 0, 0}, {1, 1, 1});
+  fin.vertices.push_back({0.5, -1, 0});
+  fin.triangles.push_back({0, 1, 8});
+  CHECK_FALSE(walkable(fin));
+  // Two boxes sharing one corner: two fans at that vertex.
+  ncv::Mesh pinched = fx::box({0, 0, 0}, {1, 1, 1});
+  const ncv::Mesh other = fx::translated(fx::box({0, 0, 0}, {1, 1, 1}), {1, 1, 1});
+  const auto base = static_cast<std::uint32_t>(pinched.vertices.size());
+  const auto at = [&](ncv::Vec3 p) {
+    return static_cast<std::uint32_t>(
+        std::find(pinched.vertices.begin(), pinched.vertices.end(), p) - pinched.vertices.begin());
+  };
+  std::vector<std::uint32_t> index;
+  for (const ncv::Vec3& p : other.vertices) {
+    const std::uint32_t shared = at(p);
+    index.push_back(shared < base ? shared : static_cast<std::uint32_t>(pinched.vertices.size()));
+    if (shared >= base) pinched.vertices.push_back(p);
+  }
+  for (const ncv::Triangle& t : other.triangles) {
+    pinched.triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
+  }
+  REQUIRE(pinched.vertex_count() == 15);
+  CHECK_FALSE(walkable(pinched));
+  ncv::Mesh repeated = fx::box({0, 0, 0}, {1, 1, 1});
+  repeated.triangles.push_back({0, 0, 1});
+  CHECK_FALSE(walkable(repeated));
+}
+
+TEST_CASE("reference surface: on the arrays the pseudonormals are the halfedges'",
+          "[pseudonormals]") {
+  for (const ncv::Mesh& mesh :
+       {fx::torus(40, 10, 60, 30), fx::flipped(fx::pocketed_block().mesh(0.7))}) {
+    const ncv::ReferenceSurface halfedges(mesh, "part");
+    const ncv::ReferenceSurface arrays(mesh, "part", ncv::SurfaceHolding::arrays);
+    REQUIRE(halfedges.on_halfedges());
+    REQUIRE_FALSE(arrays.on_halfedges());
+    CHECK(arrays.normals().vertex.empty());  // each worked out around its fan when asked
+    for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+      for (int f = 0; f < 7; ++f) {
+        const auto feature = static_cast<ncv::TriangleFeature>(f);
+        CHECK(arrays.pseudonormal(t, feature) == halfedges.pseudonormal(t, feature));
+      }
+    }
+  }
+}
 
 TEST_CASE("pseudonormals: halfedges and arrays agree to the bit", "[pseudonormals]") {
   check_bit_identical(fx::box({0, 0, 0}, {1, 2, 3}));
