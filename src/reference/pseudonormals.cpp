@@ -69,14 +69,19 @@ class VertexTerms {
   std::size_t count_ = 0;
 };
 
-// An edge's faces' normals added in slot order (ascending faces) from zero.
-Vec3 edge_sum(const EdgeIncidence& incidence, std::span<const Vec3> faces, std::size_t e) {
+// An edge's faces' normals (normal_of(face)) added in slot order (ascending faces) from zero.
+template <class NormalOf>
+Vec3 edge_sum(const EdgeIncidence& incidence, std::size_t e, NormalOf normal_of) {
   Vec3 sum(0, 0, 0);
   for (std::uint32_t i = incidence.edge_begin[e]; i < incidence.edge_begin[e + 1]; ++i) {
-    const Vec3 n = faces[incidence.slots[i] / 3];
+    const Vec3 n = normal_of(incidence.slots[i] / 3);
     if (!is_zero(n)) sum += n;
   }
   return normalized(sum);
+}
+
+Vec3 face_normal_of(std::span<const TriangleCorners> corners, std::size_t t) {
+  return face_normal(corners[t][0], corners[t][1], corners[t][2]);
 }
 
 void normalize_all(std::vector<Vec3>& vectors) {
@@ -88,9 +93,8 @@ void normalize_all(std::vector<Vec3>& vectors) {
 
 Buffer<Vec3> face_normals(std::span<const TriangleCorners> corners) {
   Buffer<Vec3> normals(corners.size());
-  parallel_over(corners.size(), 1 << 12, [&](std::size_t t) {
-    normals[t] = face_normal(corners[t][0], corners[t][1], corners[t][2]);
-  });
+  parallel_over(corners.size(), 1 << 12,
+                [&](std::size_t t) { normals[t] = face_normal_of(corners, t); });
   return normals;
 }
 
@@ -185,8 +189,9 @@ Pseudonormals array_pseudonormals(const Mesh& mesh, std::span<const TriangleCorn
   }
   normalize_all(normals.vertex);
   normals.edge.resize(incidence.edge_count());
-  parallel_over(incidence.edge_count(), 1 << 14,
-                [&](std::size_t e) { normals.edge[e] = edge_sum(incidence, normals.face, e); });
+  parallel_over(incidence.edge_count(), 1 << 14, [&](std::size_t e) {
+    normals.edge[e] = edge_sum(incidence, e, [&](std::size_t f) { return normals.face[f]; });
+  });
   normals.edge_of_slot = std::move(incidence.edge_of_slot);
   return normals;
 }
@@ -201,8 +206,12 @@ bool fans_walkable(const Mesh& mesh, const TopologyReport& topology) {
 // Around the vertex from `triangle` across one edge after another (each on exactly two
 // triangles) until back at `triangle`: its one fan, so every face it has. The step count is
 // bounded so that no structure can loop forever.
+Vec3 FanPseudonormals::face(std::span<const TriangleCorners> corners, std::size_t triangle) {
+  return face_normal_of(corners, triangle);
+}
+
 Vec3 FanPseudonormals::vertex(const Mesh& mesh, std::span<const TriangleCorners> corners,
-                              std::span<const Vec3> faces, std::size_t triangle, int k) const {
+                              std::size_t triangle, int k) const {
   const std::uint32_t v = mesh.triangles[triangle][static_cast<std::size_t>(k)];
   VertexTerms terms;
   std::size_t t = triangle;
@@ -211,10 +220,10 @@ Vec3 FanPseudonormals::vertex(const Mesh& mesh, std::span<const TriangleCorners>
   for (std::size_t steps = 0; steps < incidence_.slots.size(); ++steps) {
     const Triangle& tri = mesh.triangles[t];
     const int corner = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
-    if (!is_zero(faces[t])) {
-      const auto& c = corners[t];
-      const auto at = [&](int i) { return c[static_cast<std::size_t>((corner + i) % 3)]; };
-      terms.add(t, corner_angle(at(0), at(1), at(2)) * faces[t]);
+    const Vec3 n = face_normal_of(corners, t);
+    if (!is_zero(n)) {
+      const auto at = [&](int i) { return corners[t][static_cast<std::size_t>((corner + i) % 3)]; };
+      terms.add(t, corner_angle(at(0), at(1), at(2)) * n);
     }
     const std::uint32_t e = incidence_.edge_of_slot[out];
     const std::uint32_t first = incidence_.slots[incidence_.edge_begin[e]];
@@ -230,9 +239,11 @@ Vec3 FanPseudonormals::vertex(const Mesh& mesh, std::span<const TriangleCorners>
   return terms.normalized_sum();
 }
 
-Vec3 FanPseudonormals::edge(std::span<const Vec3> faces, std::size_t triangle, int k) const {
+Vec3 FanPseudonormals::edge(std::span<const TriangleCorners> corners, std::size_t triangle,
+                            int k) const {
   const std::uint32_t e = incidence_.edge_of_slot[3 * triangle + static_cast<std::size_t>(k)];
-  return e == kNoEdge ? Vec3(0, 0, 0) : edge_sum(incidence_, faces, e);
+  if (e == kNoEdge) return Vec3(0, 0, 0);
+  return edge_sum(incidence_, e, [&](std::size_t f) { return face_normal_of(corners, f); });
 }
 
 }  // namespace ncv

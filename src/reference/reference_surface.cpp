@@ -128,7 +128,6 @@ ReferenceSurface::ReferenceSurface(Mesh mesh, const std::string& source, StoredS
 void ReferenceSurface::compute_normals(EdgeIncidence& incidence, SurfaceHolding holding) {
   if (holding == SurfaceHolding::arrays || !holds_as_halfedge_mesh(local_, topology_)) {
     if (fans_walkable(local_, topology_)) {
-      normals_.face = face_normals(corners_);
       fans_.emplace(std::move(incidence));
     } else {
       normals_ = array_pseudonormals(local_, corners_, std::move(incidence));
@@ -178,16 +177,19 @@ void ReferenceSurface::choose_sign_method(const std::string& source) {
 
 Vec3 ReferenceSurface::pseudonormal(std::size_t triangle, TriangleFeature feature) const {
   if (is_vertex(feature)) {
-    if (fans_)
-      return fans_->vertex(local_, corners_, normals_.face, triangle, vertex_index(feature));
+    if (fans_) return fans_->vertex(local_, corners_, triangle, vertex_index(feature));
     return normals_.vertex[local_.triangles[triangle][vertex_index(feature)]];
   }
   if (is_edge(feature)) {
-    if (fans_) return fans_->edge(normals_.face, triangle, edge_index(feature));
+    if (fans_) return fans_->edge(corners_, triangle, edge_index(feature));
     const std::uint32_t edge = normals_.edge_of_slot[3 * triangle + edge_index(feature)];
     return edge == kNoEdge ? Vec3(0, 0, 0) : normals_.edge[edge];
   }
-  return normals_.face[triangle];
+  return face_normal(triangle);
+}
+
+Vec3 ReferenceSurface::face_normal(std::size_t triangle) const {
+  return fans_ ? FanPseudonormals::face(corners_, triangle) : normals_.face[triangle];
 }
 
 }  // namespace ncv

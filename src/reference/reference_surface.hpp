@@ -24,10 +24,10 @@
 // (pseudonormals.hpp) come from its halfedge structure. One it cannot hold is detected on the
 // plain arrays (analyse_topology) and signed by the winding number; its pseudonormals (for an
 // explicit --sign pseudonormal) come from the arrays. On the arrays, a surface whose fans can
-// be walked (fans_walkable: the reverse direction's workpiece, as a rule) has its face normals
-// made up front and its vertices' and edges' pseudonormals worked out around their fans when
-// asked (FanPseudonormals), the same values. A grid file stores the results of a surface held
-// on halfedges, so one read back (StoredSurface) rebuilds none of them.
+// be walked (fans_walkable: the reverse direction's workpiece, as a rule) has each face normal
+// and each vertex's or edge's pseudonormal worked out (around its fan) when asked
+// (FanPseudonormals), the same values, rather than all up front. A grid file stores the results of
+// a surface held on halfedges, so one read back (StoredSurface) rebuilds none of them.
 #pragma once
 
 #include <cstdint>
@@ -99,7 +99,7 @@ class ReferenceSurface {
   // a grid file: the first 100 of them); their number.
   const std::vector<BoundaryLoop>& boundary_loops() const { return boundary_loops_; }
   std::uint64_t boundary_loop_count() const { return boundary_loop_count_; }
-  // Vertices' and edges' empty when they come from their fans (fans_walkable).
+  // Empty when they come from the fans (fans_walkable); then ask the two below.
   const Pseudonormals& normals() const { return normals_; }
   bool flipped() const { return flipped_; }
   // SignMethod::pseudonormal or SignMethod::winding, and why when winding.
@@ -107,7 +107,7 @@ class ReferenceSurface {
   const std::string& winding_reason() const { return winding_reason_; }
 
   // Unit normal, or zero for a degenerate face.
-  Vec3 face_normal(std::size_t triangle) const { return normals_.face[triangle]; }
+  Vec3 face_normal(std::size_t triangle) const;
   // Unit pseudonormal of a feature of a triangle; zero when it has none (only degenerate
   // faces around it, or faces that cancel).
   Vec3 pseudonormal(std::size_t triangle, TriangleFeature feature) const;
@@ -130,8 +130,7 @@ class ReferenceSurface {
   bool on_halfedges_ = false;
   std::vector<BoundaryLoop> boundary_loops_;
   std::uint64_t boundary_loop_count_ = 0;
-  // The face normals only, when the vertices' and edges' come from their fans (on the
-  // arrays, fans_walkable).
+  // Empty when every normal comes from the fans (on the arrays, fans_walkable).
   Pseudonormals normals_;
   std::optional<FanPseudonormals> fans_;
 };

@@ -42,11 +42,11 @@ void check_fans_agree(const ncv::Mesh& mesh) {
   const ncv::Pseudonormals arrays = ncv::array_pseudonormals(mesh, corners, incidence);
   const ncv::FanPseudonormals fans(incidence);
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    CHECK(ncv::FanPseudonormals::face(corners, t) == arrays.face[t]);
     for (int k = 0; k < 3; ++k) {
-      CHECK(fans.vertex(mesh, corners, arrays.face, t, k) == arrays.vertex[mesh.triangles[t][k]]);
+      CHECK(fans.vertex(mesh, corners, t, k) == arrays.vertex[mesh.triangles[t][k]]);
       const std::uint32_t e = arrays.edge_of_slot[3 * t + static_cast<std::size_t>(k)];
-      CHECK(fans.edge(arrays.face, t, k) ==
-            (e == ncv::kNoEdge ? ncv::Vec3(0, 0, 0) : arrays.edge[e]));
+      CHECK(fans.edge(corners, t, k) == (e == ncv::kNoEdge ? ncv::Vec3(0, 0, 0) : arrays.edge[e]));
     }
   }
 }
@@ -131,8 +131,10 @@ TEST_CASE("reference surface: on the arrays the pseudonormals are the halfedges'
     const ncv::ReferenceSurface arrays(mesh, "part", ncv::SurfaceHolding::arrays);
     REQUIRE(halfedges.on_halfedges());
     REQUIRE_FALSE(arrays.on_halfedges());
-    CHECK(arrays.normals().vertex.empty());  // each worked out around its fan when asked
+    CHECK(arrays.normals().vertex.empty());  // each worked out (around its fan) when asked
+    CHECK(arrays.normals().face.empty());
     for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+      CHECK(arrays.face_normal(t) == halfedges.face_normal(t));
       for (int f = 0; f < 7; ++f) {
         const auto feature = static_cast<ncv::TriangleFeature>(f);
         CHECK(arrays.pseudonormal(t, feature) == halfedges.pseudonormal(t, feature));
