@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "util/error.hpp"
+#include "util/round_nonnegative.hpp"
 
 namespace ncv {
 
@@ -34,8 +35,10 @@ constexpr double kTurbo[3][6] = {
     {0.10667330, 12.64194608, -60.58204836, 110.36276771, -89.90310912, 27.34824973}};
 constexpr int kTurboStops = 65;
 
+// A NaN (no colour map makes one) would come out as 0, as lround's does.
 std::uint8_t to_byte(double unit) {
-  return static_cast<std::uint8_t>(std::lround(std::clamp(unit, 0.0, 1.0) * 255));
+  const double x = std::clamp(unit, 0.0, 1.0) * 255;
+  return x >= 0 ? static_cast<std::uint8_t>(round_nonnegative(x)) : 0;
 }
 
 Rgb mix(Rgb a, Rgb b, double t) {

@@ -13,6 +13,7 @@
 #include "util/block_offsets.hpp"
 #include "util/error.hpp"
 #include "util/ordered_reduce.hpp"
+#include "util/round_nonnegative.hpp"
 
 namespace ncv {
 namespace {
@@ -151,7 +152,7 @@ std::uint32_t lattice_size(double area, double step) {
   const double n_prime = std::sqrt(0.25 + 2.0 * area / (step * step)) - 0.5;
   // Caps keep the conversion defined; the sample-count guard refuses such steps anyway.
   if (!(n_prime < 2.0e9)) return 2'000'000'000u;
-  return static_cast<std::uint32_t>(std::lround(n_prime));
+  return static_cast<std::uint32_t>(round_nonnegative(n_prime));  // n_prime >= 0
 }
 
 std::uint64_t SampleSet::sample_at(std::size_t t, std::uint32_t i, std::uint32_t j) const {
