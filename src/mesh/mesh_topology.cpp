@@ -305,10 +305,20 @@ EdgeIncidence build_edge_incidence(const Mesh& mesh) {
   std::partial_sum(first_edge.begin(), first_edge.end(), first_edge.begin());
 
   EdgeIncidence incidence;
-  incidence.edge_of_slot.assign(3 * mesh.triangle_count(), kNoEdge);
+  incidence.edge_of_slot.resize(3 * mesh.triangle_count());
   incidence.edge_begin.resize(first_edge.back() + 1);
   incidence.edge_begin.back() = static_cast<std::uint32_t>(keys.size());
   incidence.slots.resize(keys.size());
+  // The slots of triangles that repeat a corner have no edge; every other slot gets its
+  // edge below.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.triangle_count(), 1 << 14),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t t = range.begin(); t != range.end(); ++t) {
+                        if (!repeats_vertex(mesh.triangles[t])) continue;
+                        for (std::size_t k = 0; k < 3; ++k)
+                          incidence.edge_of_slot[3 * t + k] = kNoEdge;
+                      }
+                    });
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 1 << 12),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t v = range.begin(); v != range.end(); ++v) {

@@ -16,15 +16,18 @@
 #include <vector>
 
 #include "mesh/mesh.hpp"
+#include "util/buffer.hpp"
 
 namespace ncv {
 
 inline constexpr std::uint32_t kNoEdge = std::numeric_limits<std::uint32_t>::max();
 
+// Buffers, every element written by build_edge_incidence's parallel loops (zero-filling
+// the 1.25 M-triangle finishing workpiece's first, on one thread, took 24 ms).
 struct EdgeIncidence {
-  std::vector<std::uint32_t> edge_of_slot;  // per slot: its undirected edge, or kNoEdge
-  std::vector<std::uint32_t> edge_begin;    // per edge + 1: range of `slots`
-  std::vector<std::uint32_t> slots;         // slots grouped by edge, ascending within one
+  Buffer<std::uint32_t> edge_of_slot;  // per slot: its undirected edge, or kNoEdge
+  Buffer<std::uint32_t> edge_begin;    // per edge + 1: range of `slots`
+  Buffer<std::uint32_t> slots;         // slots grouped by edge, ascending within one
 
   std::size_t edge_count() const { return edge_begin.empty() ? 0 : edge_begin.size() - 1; }
   std::uint32_t slot_count(std::size_t edge) const {

@@ -28,10 +28,10 @@
 namespace ncv {
 
 struct Pseudonormals {
-  Buffer<Vec3> face;                        // per triangle: unit, or zero when degenerate
-  std::vector<Vec3> vertex;                 // per vertex: unit, or zero
-  std::vector<Vec3> edge;                   // per undirected edge: unit, or zero
-  std::vector<std::uint32_t> edge_of_slot;  // per triangle edge 3t + k: its edge, or kNoEdge
+  Buffer<Vec3> face;                   // per triangle: unit, or zero when degenerate
+  std::vector<Vec3> vertex;            // per vertex: unit, or zero
+  std::vector<Vec3> edge;              // per undirected edge: unit, or zero
+  Buffer<std::uint32_t> edge_of_slot;  // per triangle edge 3t + k: its edge, or kNoEdge
 };
 
 // Face normals only (the first step of both ways below), from each triangle's corners.

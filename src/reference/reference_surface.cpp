@@ -118,7 +118,7 @@ ReferenceSurface::ReferenceSurface(Mesh mesh, const std::string& source, StoredS
   normals_.face = face_normals(corners_);
   normals_.vertex = std::move(stored.vertex_pseudonormals);
   normals_.edge = std::move(stored.edge_pseudonormals);
-  normals_.edge_of_slot = std::move(stored.edge_of_slot);
+  normals_.edge_of_slot.assign(stored.edge_of_slot.begin(), stored.edge_of_slot.end());
   choose_sign_method(source);
 }
 
