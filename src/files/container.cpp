@@ -11,6 +11,10 @@
 #include <memory>
 #include <new>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
 #include "util/input_bytes.hpp"
 
 namespace ncv {
@@ -108,39 +112,66 @@ void ContainerWriter::add_raw(std::string name, const char* dtype, std::size_t w
   sections_.push_back({std::move(name), dtype, width, data, bytes, std::move(shape)});
 }
 
-void ContainerWriter::add_counts(std::string name, const std::vector<std::uint32_t>& counts) {
-  const std::uint32_t largest =
-      counts.empty() ? 0 : *std::max_element(counts.begin(), counts.end());
+namespace {
+
+// body(i) for every i < count, in parallel.
+template <class Body>
+void parallel_over(std::size_t count, Body body) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1 << 16), [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) body(i);
+  });
+}
+
+bool is_float(double x) {
+  return static_cast<double>(static_cast<float>(x)) == x;
+}
+
+}  // namespace
+
+void ContainerWriter::add_counts(std::string name, std::span<const std::uint32_t> counts) {
+  const std::uint32_t largest = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, counts.size(), 1 << 16), std::uint32_t{0},
+      [&](const auto& range, std::uint32_t most) {
+        for (std::size_t i = range.begin(); i != range.end(); ++i) most = std::max(most, counts[i]);
+        return most;
+      },
+      [](std::uint32_t a, std::uint32_t b) { return std::max(a, b); });
   const auto add_as = [&]<class T>(T) {
-    const std::span<const T> narrow = keep(std::vector<T>(counts.begin(), counts.end()));
-    add<T>(std::move(name), narrow, {narrow.size()});
+    const std::span<T> narrow = kept_array<T>(counts.size());
+    parallel_over(counts.size(), [&](std::size_t i) { narrow[i] = static_cast<T>(counts[i]); });
+    add<T>(std::move(name), std::span<const T>(narrow), {narrow.size()});
   };
   if (largest <= 0xff) {
     add_as(std::uint8_t{});
   } else if (largest <= 0xffff) {
     add_as(std::uint16_t{});
   } else {
-    add<std::uint32_t>(std::move(name), keep(counts), {counts.size()});
+    add_as(std::uint32_t{});
   }
 }
 
 void ContainerWriter::add_points(std::string name, std::span<const Vec3> points) {
-  const bool floats = std::all_of(points.begin(), points.end(), [](const Vec3& p) {
-    return static_cast<double>(static_cast<float>(p[0])) == p[0] &&
-           static_cast<double>(static_cast<float>(p[1])) == p[1] &&
-           static_cast<double>(static_cast<float>(p[2])) == p[2];
-  });
+  const bool floats = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, points.size(), 1 << 16), true,
+      [&](const auto& range, bool all) {
+        for (std::size_t i = range.begin(); all && i != range.end(); ++i) {
+          all = is_float(points[i][0]) && is_float(points[i][1]) && is_float(points[i][2]);
+        }
+        return all;
+      },
+      [](bool a, bool b) { return a && b; });
   if (!floats) {
     add<double>(std::move(name),
                 {reinterpret_cast<const double*>(points.data()), points.size() * 3},
                 {points.size(), 3});
     return;
   }
-  std::vector<float> flat(points.size() * 3);
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    for (int k = 0; k < 3; ++k) flat[3 * i + k] = static_cast<float>(points[i][k]);
-  }
-  add<float>(std::move(name), keep(flat), {points.size(), 3});
+  const std::span<float> flat = kept_array<float>(points.size() * 3);
+  parallel_over(points.size(), [&](std::size_t i) {
+    for (int k = 0; k < 3; ++k)
+      flat[3 * i + static_cast<std::size_t>(k)] = static_cast<float>(points[i][k]);
+  });
+  add<float>(std::move(name), std::span<const float>(flat), {points.size(), 3});
 }
 
 std::uint64_t ContainerWriter::write(OutputFile& out) {

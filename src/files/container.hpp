@@ -82,16 +82,10 @@ class ContainerWriter {
     add_raw(std::move(name), dtype_of<T>(), sizeof(T), data.data(), data.size_bytes(),
             std::move(shape));
   }
-  // Keeps `data` until write(), for a section made on the fly, and returns a view of it.
-  template <class T>
-  std::span<const T> keep(const std::vector<T>& data) {
-    std::vector<char>& bytes = kept_.emplace_back(data.size() * sizeof(T));
-    if (!data.empty()) std::memcpy(bytes.data(), data.data(), bytes.size());  // never null
-    return {reinterpret_cast<const T*>(bytes.data()), data.size()};
-  }
   // Counts in the narrowest unsigned type that holds the largest (<u1, <u2 or <u4): most
-  // are small, so a byte each. Read back with Container::get_counts.
-  void add_counts(std::string name, const std::vector<std::uint32_t>& counts);
+  // are small, so a byte each. Read back with Container::get_counts. Kept: `counts` need not
+  // outlive the call.
+  void add_counts(std::string name, std::span<const std::uint32_t> counts);
   // Points as <f4 when every coordinate is a float exactly (as binary STL gives them), else
   // <f8: half the bytes, the same values. Read back with Container::get_points.
   void add_points(std::string name, std::span<const Vec3> points);
@@ -113,7 +107,15 @@ class ContainerWriter {
   std::uint32_t version_;
   nlohmann::json meta_;
   std::vector<Section> sections_;
-  std::deque<std::vector<char>> kept_;  // a deque: a kept vector never moves
+  // Room for `count` values of a section made on the fly, kept until write(); unwritten, for
+  // a parallel loop to fill (the grid file's cell counts, serial, were a tenth of its write).
+  template <class T>
+  std::span<T> kept_array(std::size_t count) {
+    Buffer<char>& bytes = kept_.emplace_back(count * sizeof(T));
+    return {reinterpret_cast<T*>(bytes.data()), count};
+  }
+
+  std::deque<Buffer<char>> kept_;  // a deque: a kept buffer never moves
 };
 
 // A parsed, verified container: magic, kind, version, sizes and content hash all checked.

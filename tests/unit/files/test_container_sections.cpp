@@ -48,6 +48,20 @@ TEST_CASE("points that are floats are stored as floats, others as doubles, exact
   CHECK(b.dtype("p") == "<f8");
   CHECK(b.get_points("p", doubles.size()) == doubles);
   CHECK_THROWS_AS(b.get_points("p", doubles.size() + 1), InputError);
+
+  // Many blocks (checked and converted in parallel): one double in the last block decides.
+  std::vector<Vec3> many(200000);
+  for (std::size_t i = 0; i < many.size(); ++i) {
+    const auto x = static_cast<float>(i) * 0.25f;
+    many[i] = Vec3(x, -x, 1.0f / static_cast<float>(i + 1));
+  }
+  const Container m = round_trip(dir, [&](ContainerWriter& w) { w.add_points("p", many); });
+  CHECK(m.dtype("p") == "<f4");
+  CHECK(m.get_points("p", many.size()) == many);
+  many.back()[1] = 0.1;
+  const Container n = round_trip(dir, [&](ContainerWriter& w) { w.add_points("p", many); });
+  CHECK(n.dtype("p") == "<f8");
+  CHECK(n.get_points("p", many.size()) == many);
 }
 
 TEST_CASE("counts are stored in the narrowest unsigned type that holds the largest",
@@ -61,7 +75,19 @@ TEST_CASE("counts are stored in the narrowest unsigned type that holds the large
     CHECK(c.dtype("n") == dtype);
     CHECK(c.get_counts("n", counts.size()) == counts);
   }
-  const Container c = round_trip(dir, [](ContainerWriter& w) { w.add_counts("n", {1, 2}); });
+  // Many blocks (made in parallel): the largest in the last decides the type.
+  std::vector<std::uint32_t> many(300000);
+  for (std::size_t i = 0; i < many.size(); ++i) many[i] = static_cast<std::uint32_t>(i % 251);
+  for (const auto& [last, dtype] :
+       {std::pair<std::uint32_t, const char*>{250, "<u1"}, {70000, "<u4"}}) {
+    many.back() = last;
+    const Container big = round_trip(dir, [&](ContainerWriter& w) { w.add_counts("n", many); });
+    CHECK(big.dtype("n") == dtype);
+    CHECK(big.get_counts("n", many.size()) == many);
+  }
+  const Container c = round_trip(dir, [](ContainerWriter& w) {
+    w.add_counts("n", std::vector<std::uint32_t>{1, 2});  // a temporary: add_counts keeps it
+  });
   CHECK_THROWS_AS(c.get_counts("n", 3), InputError);
   CHECK_THROWS_AS(c.get_counts("missing", 2), InputError);
 }
