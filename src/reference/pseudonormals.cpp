@@ -203,26 +203,25 @@ bool fans_walkable(const Mesh& mesh, const TopologyReport& topology) {
   });
 }
 
-// Around the vertex from `triangle` across one edge after another (each on exactly two
-// triangles) until back at `triangle`: its one fan, so every face it has. The step count is
-// bounded so that no structure can loop forever.
 Vec3 FanPseudonormals::face(std::span<const TriangleCorners> corners, std::size_t triangle) {
   return face_normal_of(corners, triangle);
 }
 
+// Around the vertex from `triangle` across one edge after another (each on exactly two
+// triangles) until back at `triangle`: its one fan, so every face it has. The step count is
+// bounded so that no structure can loop forever.
 Vec3 FanPseudonormals::vertex(const Mesh& mesh, std::span<const TriangleCorners> corners,
                               std::size_t triangle, int k) const {
   const std::uint32_t v = mesh.triangles[triangle][static_cast<std::size_t>(k)];
   VertexTerms terms;
   std::size_t t = triangle;
+  auto corner = static_cast<std::uint32_t>(k);  // v's corner in t
   // The slot of t along which the walk leaves it: first the one starting at v.
-  std::uint32_t out = static_cast<std::uint32_t>(3 * triangle) + static_cast<std::uint32_t>(k);
+  std::uint32_t out = static_cast<std::uint32_t>(3 * t) + corner;
   for (std::size_t steps = 0; steps < incidence_.slots.size(); ++steps) {
-    const Triangle& tri = mesh.triangles[t];
-    const int corner = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
     const Vec3 n = face_normal_of(corners, t);
     if (!is_zero(n)) {
-      const auto at = [&](int i) { return corners[t][static_cast<std::size_t>((corner + i) % 3)]; };
+      const auto at = [&](std::uint32_t i) { return corners[t][(corner + i) % 3]; };
       terms.add(t, corner_angle(at(0), at(1), at(2)) * n);
     }
     const std::uint32_t e = incidence_.edge_of_slot[out];
@@ -230,11 +229,12 @@ Vec3 FanPseudonormals::vertex(const Mesh& mesh, std::span<const TriangleCorners>
     const std::uint32_t in = first == out ? incidence_.slots[incidence_.edge_begin[e] + 1] : first;
     t = in / 3;
     if (t == triangle) break;
-    // The next triangle's other slot at v: v starts slot c and ends slot c + 2 (mod 3).
+    // Leave the next triangle by its other slot at v: v starts slot `corner` and ends slot
+    // `corner` + 2 (mod 3).
     const Triangle& next = mesh.triangles[t];
-    const std::uint32_t c = next[0] == v ? 0 : next[1] == v ? 1 : 2;
-    const std::uint32_t starting = static_cast<std::uint32_t>(3 * t) + c;
-    out = in == starting ? static_cast<std::uint32_t>(3 * t) + (c + 2) % 3 : starting;
+    corner = next[0] == v ? 0 : next[1] == v ? 1 : 2;
+    const std::uint32_t starting = static_cast<std::uint32_t>(3 * t) + corner;
+    out = in == starting ? static_cast<std::uint32_t>(3 * t) + (corner + 2) % 3 : starting;
   }
   return terms.normalized_sum();
 }
