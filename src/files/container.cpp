@@ -12,10 +12,10 @@
 #include <new>
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
 #include "util/input_bytes.hpp"
+#include "util/parallel_over.hpp"
 
 namespace ncv {
 namespace {
@@ -114,13 +114,7 @@ void ContainerWriter::add_raw(std::string name, const char* dtype, std::size_t w
 
 namespace {
 
-// body(i) for every i < count, in parallel.
-template <class Body>
-void parallel_over(std::size_t count, Body body) {
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1 << 16), [&](const auto& range) {
-    for (std::size_t i = range.begin(); i != range.end(); ++i) body(i);
-  });
-}
+constexpr std::size_t kGrain = std::size_t{1} << 16;
 
 bool is_float(double x) {
   return static_cast<double>(static_cast<float>(x)) == x;
@@ -138,7 +132,8 @@ void ContainerWriter::add_counts(std::string name, std::span<const std::uint32_t
       [](std::uint32_t a, std::uint32_t b) { return std::max(a, b); });
   const auto add_as = [&]<class T>(T) {
     const std::span<T> narrow = kept_array<T>(counts.size());
-    parallel_over(counts.size(), [&](std::size_t i) { narrow[i] = static_cast<T>(counts[i]); });
+    parallel_over(counts.size(), kGrain,
+                  [&](std::size_t i) { narrow[i] = static_cast<T>(counts[i]); });
     add<T>(std::move(name), std::span<const T>(narrow), {narrow.size()});
   };
   if (largest <= 0xff) {
@@ -167,7 +162,7 @@ void ContainerWriter::add_points(std::string name, std::span<const Vec3> points)
     return;
   }
   const std::span<float> flat = kept_array<float>(points.size() * 3);
-  parallel_over(points.size(), [&](std::size_t i) {
+  parallel_over(points.size(), kGrain, [&](std::size_t i) {
     for (int k = 0; k < 3; ++k)
       flat[3 * i + static_cast<std::size_t>(k)] = static_cast<float>(points[i][k]);
   });

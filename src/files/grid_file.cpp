@@ -1,10 +1,8 @@
 #include "files/grid_file.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "files/mesh_arrays.hpp"
 #include "geometry/point_json.hpp"
+#include "util/parallel_over.hpp"
 
 namespace ncv {
 namespace {
@@ -133,7 +131,7 @@ StoredSurface read_stored_surface(const Container& c, std::uint64_t vertices,
   }
   s.vertex_pseudonormals = c.get_points("vertex_pseudonormals", vertices);
   s.edge_pseudonormals = c.get_points("edge_pseudonormals", s.topology.edges);
-  s.edge_of_slot = c.get<std::uint32_t>("edge_of_slot", 3 * triangles);
+  s.edge_of_slot = c.get<std::uint32_t, Buffer<std::uint32_t>>("edge_of_slot", 3 * triangles);
   return s;
 }
 
@@ -155,13 +153,9 @@ void write_grid_file(const IndexedReference& g, const GridStatistics& statistics
   // Each cell's count rather than its offset: most cells of a dense mesh's grid are empty or
   // short, so a byte each instead of eight.
   Buffer<std::uint32_t> counts(g.grid.cell_count());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, counts.size(), 1 << 16),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t c = range.begin(); c != range.end(); ++c) {
-                        counts[c] = static_cast<std::uint32_t>(g.grid.cell_offsets[c + 1] -
-                                                               g.grid.cell_offsets[c]);
-                      }
-                    });
+  parallel_over(counts.size(), 1 << 16, [&](std::size_t c) {
+    counts[c] = static_cast<std::uint32_t>(g.grid.cell_offsets[c + 1] - g.grid.cell_offsets[c]);
+  });
   writer.add_counts("cell_counts", counts);
   writer.add<std::uint32_t>("cell_triangles", g.grid.cell_triangles,
                             {g.grid.cell_triangles.size()});

@@ -2,8 +2,7 @@
 
 #include <algorithm>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include "util/parallel_over.hpp"
 
 namespace ncv {
 namespace {
@@ -12,20 +11,10 @@ using VertexHandle = TriMesh::VertexHandle;
 using HalfedgeHandle = TriMesh::HalfedgeHandle;
 using FaceHandle = TriMesh::FaceHandle;
 
-bool repeats_corner(const Triangle& t) {
-  return t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
-}
+constexpr std::size_t kGrain = std::size_t{1} << 14;
 
 VertexHandle vertex_handle(std::uint32_t v) {
   return VertexHandle(static_cast<int>(v));
-}
-
-template <class Body>
-void parallel_over(std::size_t count, Body body) {
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1 << 14),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t i = range.begin(); i != range.end(); ++i) body(i);
-                    });
 }
 
 }  // namespace
@@ -51,10 +40,10 @@ HalfedgeHandle slot_halfedge(const EdgeIncidence& incidence, std::uint32_t slot)
 TriMesh halfedge_mesh(const Mesh& mesh, const EdgeIncidence& incidence) {
   TriMesh result;
   result.resize(mesh.vertex_count(), incidence.edge_count(), mesh.triangle_count());
-  parallel_over(mesh.vertex_count(), [&](std::size_t v) {
+  parallel_over(mesh.vertex_count(), kGrain, [&](std::size_t v) {
     result.point(vertex_handle(static_cast<std::uint32_t>(v))) = mesh.vertices[v];
   });
-  parallel_over(mesh.triangle_count(), [&](std::size_t t) {
+  parallel_over(mesh.triangle_count(), kGrain, [&](std::size_t t) {
     const Triangle& corners = mesh.triangles[t];
     const auto face = FaceHandle(static_cast<int>(t));
     for (std::uint32_t k = 0; k < 3; ++k) {
@@ -87,14 +76,14 @@ TriMesh halfedge_mesh(const Mesh& mesh, const EdgeIncidence& incidence) {
   const auto corner = [&](std::uint32_t slot, std::uint32_t step) {
     return mesh.triangles[slot / 3][(slot % 3 + step) % 3];
   };
-  parallel_over(incidence.edge_count(), [&](std::size_t edge) {
+  parallel_over(incidence.edge_count(), kGrain, [&](std::size_t edge) {
     const std::uint32_t slot = boundary_slot(edge);
     if (slot == kNoEdge) return;
     const auto h = HalfedgeHandle(static_cast<int>(2 * edge + 1));
     result.set_vertex_handle(h, vertex_handle(corner(slot, 0)));
     result.set_halfedge_handle(vertex_handle(corner(slot, 1)), h);
   });
-  parallel_over(incidence.edge_count(), [&](std::size_t edge) {
+  parallel_over(incidence.edge_count(), kGrain, [&](std::size_t edge) {
     const std::uint32_t slot = boundary_slot(edge);
     if (slot == kNoEdge) return;
     const auto h = HalfedgeHandle(static_cast<int>(2 * edge + 1));

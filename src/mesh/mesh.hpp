@@ -23,6 +23,11 @@ struct Mesh {
   Vec3 corner(std::size_t triangle, int k) const { return vertices[triangles[triangle][k]]; }
 };
 
+// A triangle that names one vertex twice: it has no area and no edges of its own.
+constexpr bool repeats_corner(const Triangle& t) {
+  return t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
+}
+
 // Twice-area normal (not normalised) of triangle t: cross(B - A, C - A).
 Vec3 area_vector(const Mesh& mesh, std::size_t triangle);
 double triangle_area(const Mesh& mesh, std::size_t triangle);

@@ -15,14 +15,11 @@
 #include "util/bucket_positions.hpp"
 #include "util/buffer.hpp"
 #include "util/ordered_reduce.hpp"
+#include "util/parallel_over.hpp"
 #include "util/serial_sum.hpp"
 
 namespace ncv {
 namespace {
-
-bool repeats_vertex(const Triangle& t) {
-  return t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
-}
 
 std::uint32_t slot_start(const Mesh& mesh, std::uint32_t slot) {
   return mesh.triangles[slot / 3][slot % 3];
@@ -51,7 +48,7 @@ Buffer<std::uint64_t> slot_keys_by_low_vertex(const Mesh& mesh,
   const auto chunk_slots = [&](std::size_t c, auto&& visit) {
     const auto end = static_cast<std::uint32_t>(slot_total * (c + 1) / kSlotChunks);
     for (auto s = static_cast<std::uint32_t>(slot_total * c / kSlotChunks); s < end; ++s) {
-      if (!repeats_vertex(mesh.triangles[s / 3])) visit(s);
+      if (!repeats_corner(mesh.triangles[s / 3])) visit(s);
     }
   };
   BucketPositions<std::uint32_t, kSlotChunks> positions(vertices, [&](std::size_t c, auto&& emit) {
@@ -76,9 +73,8 @@ class CornerForest {
   // Each corner its own root, written in parallel into an unwritten buffer (a zero-filled
   // vector and a serial iota were two serial passes over 15 MB on the finishing workpiece).
   explicit CornerForest(std::size_t corners) : parent_(corners) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, corners, 1 << 16), [&](const auto& r) {
-      for (std::size_t c = r.begin(); c != r.end(); ++c) parent_[c] = static_cast<std::uint32_t>(c);
-    });
+    parallel_over(corners, 1 << 16,
+                  [&](std::size_t c) { parent_[c] = static_cast<std::uint32_t>(c); });
   }
 
   std::uint32_t find(std::uint32_t c) {
@@ -143,7 +139,7 @@ std::uint64_t count_non_manifold_vertices(const Mesh& mesh, const EdgeIncidence&
       std::uint64_t{0},
       [&](const auto& r, std::uint64_t non_manifold) {
         for (std::uint32_t c = r.begin(); c != r.end(); ++c) {
-          if (repeats_vertex(mesh.triangles[c / 3]) || forest.find(c) != c) continue;
+          if (repeats_corner(mesh.triangles[c / 3]) || forest.find(c) != c) continue;
           std::atomic_ref<std::uint8_t> count(fans[mesh.triangles[c / 3][c % 3]]);
           std::uint8_t seen = count.load(std::memory_order_relaxed);
           while (seen < 2 && !count.compare_exchange_weak(seen, static_cast<std::uint8_t>(seen + 1),
@@ -198,7 +194,7 @@ std::uint64_t count_degenerate(const Mesh& mesh) {
       [&](std::size_t begin, std::size_t end) {
         std::uint64_t part = 0;
         for (std::size_t t = begin; t < end; ++t) {
-          part += repeats_vertex(mesh.triangles[t]) ||
+          part += repeats_corner(mesh.triangles[t]) ||
                   is_degenerate_triangle(mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2));
         }
         return part;
@@ -252,7 +248,7 @@ std::uint64_t count_duplicates(const Mesh& mesh, const EdgeIncidence& incidence)
       [](std::uint64_t& acc, std::uint64_t part) { acc += part; });
   std::vector<std::array<std::uint32_t, 3>> repeating;
   for (const Triangle& t : mesh.triangles) {
-    if (repeats_vertex(t)) repeating.push_back(sorted_corners(t));
+    if (repeats_corner(t)) repeating.push_back(sorted_corners(t));
   }
   std::sort(repeating.begin(), repeating.end());
   std::uint64_t duplicates = with_edges;
@@ -311,14 +307,10 @@ EdgeIncidence build_edge_incidence(const Mesh& mesh) {
   incidence.slots.resize(keys.size());
   // The slots of triangles that repeat a corner have no edge; every other slot gets its
   // edge below.
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.triangle_count(), 1 << 14),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t t = range.begin(); t != range.end(); ++t) {
-                        if (!repeats_vertex(mesh.triangles[t])) continue;
-                        for (std::size_t k = 0; k < 3; ++k)
-                          incidence.edge_of_slot[3 * t + k] = kNoEdge;
-                      }
-                    });
+  parallel_over(mesh.triangle_count(), 1 << 14, [&](std::size_t t) {
+    if (!repeats_corner(mesh.triangles[t])) return;
+    for (std::size_t k = 0; k < 3; ++k) incidence.edge_of_slot[3 * t + k] = kNoEdge;
+  });
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 1 << 12),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t v = range.begin(); v != range.end(); ++v) {

@@ -5,19 +5,10 @@
 #include <cmath>
 #include <utility>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include "util/parallel_over.hpp"
 
 namespace ncv {
 namespace {
-
-template <class Body>
-void parallel_over(std::size_t count, std::size_t grain, Body body) {
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, grain),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t i = range.begin(); i != range.end(); ++i) body(i);
-                    });
-}
 
 double corner_angle(Vec3 apex, Vec3 b, Vec3 c) {
   const Vec3 u = b - apex;
@@ -196,11 +187,11 @@ Pseudonormals array_pseudonormals(const Mesh& mesh, std::span<const TriangleCorn
   return normals;
 }
 
-bool fans_walkable(const Mesh& mesh, const TopologyReport& topology) {
-  if (!topology.closed() || !topology.manifold()) return false;
-  return std::none_of(mesh.triangles.begin(), mesh.triangles.end(), [](const Triangle& t) {
-    return t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
-  });
+// A triangle that repeats a corner has no slots in the incidence: every slot has one when
+// none does.
+bool fans_walkable(const EdgeIncidence& incidence, const TopologyReport& topology) {
+  return topology.closed() && topology.manifold() &&
+         incidence.slots.size() == incidence.edge_of_slot.size();
 }
 
 Vec3 FanPseudonormals::face(std::span<const TriangleCorners> corners, std::size_t triangle) {

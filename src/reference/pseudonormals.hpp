@@ -48,7 +48,7 @@ Pseudonormals array_pseudonormals(const Mesh& mesh, std::span<const TriangleCorn
 // True when every vertex's pseudonormal can be found by walking around it (FanPseudonormals):
 // every edge on two triangles, one fan of triangles at every vertex, no triangle that repeats
 // a corner (it has no edges to walk across).
-bool fans_walkable(const Mesh& mesh, const TopologyReport& topology);
+bool fans_walkable(const EdgeIncidence& incidence, const TopologyReport& topology);
 
 // The arrays' normals of a surface whose fans are walkable, each worked out when it is asked
 // for rather than all up front: signing asks for few (the finishing workpiece, measured from

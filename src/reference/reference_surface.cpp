@@ -118,7 +118,7 @@ ReferenceSurface::ReferenceSurface(Mesh mesh, const std::string& source, StoredS
   normals_.face = face_normals(corners_);
   normals_.vertex = std::move(stored.vertex_pseudonormals);
   normals_.edge = std::move(stored.edge_pseudonormals);
-  normals_.edge_of_slot.assign(stored.edge_of_slot.begin(), stored.edge_of_slot.end());
+  normals_.edge_of_slot = std::move(stored.edge_of_slot);
   choose_sign_method(source);
 }
 
@@ -127,7 +127,7 @@ ReferenceSurface::ReferenceSurface(Mesh mesh, const std::string& source, StoredS
 // checks it).
 void ReferenceSurface::compute_normals(EdgeIncidence& incidence, SurfaceHolding holding) {
   if (holding == SurfaceHolding::arrays || !holds_as_halfedge_mesh(local_, topology_)) {
-    if (fans_walkable(local_, topology_)) {
+    if (fans_walkable(incidence, topology_)) {
       fans_.emplace(std::move(incidence));
     } else {
       normals_ = array_pseudonormals(local_, corners_, std::move(incidence));

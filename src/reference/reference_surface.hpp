@@ -67,7 +67,7 @@ struct StoredSurface {
   std::vector<BoundaryLoop> boundary_loops;  // the first of them (the file lists at most 100)
   std::vector<Vec3> vertex_pseudonormals;
   std::vector<Vec3> edge_pseudonormals;
-  std::vector<std::uint32_t> edge_of_slot;
+  Buffer<std::uint32_t> edge_of_slot;
 };
 
 class ReferenceSurface {

@@ -37,7 +37,7 @@ void check_bit_identical(const ncv::Mesh& mesh) {
 // Every vertex's and edge's pseudonormal found around its fan is the arrays' up-front one.
 void check_fans_agree(const ncv::Mesh& mesh) {
   const ncv::EdgeIncidence incidence = ncv::build_edge_incidence(mesh);
-  REQUIRE(ncv::fans_walkable(mesh, ncv::analyse_topology(mesh, incidence)));
+  REQUIRE(ncv::fans_walkable(incidence, ncv::analyse_topology(mesh, incidence)));
   const std::vector<ncv::TriangleCorners> corners = fx::corners_of(mesh);
   const ncv::Pseudonormals arrays = ncv::array_pseudonormals(mesh, corners, incidence);
   const ncv::FanPseudonormals fans(incidence);
@@ -89,7 +89,8 @@ TEST_CASE("pseudonormals: around the fans as the arrays give them, to the bit", 
 TEST_CASE("pseudonormals: fans walkable only on a closed surface with one fan a vertex",
           "[pseudonormals]") {
   const auto walkable = [](const ncv::Mesh& mesh) {
-    return ncv::fans_walkable(mesh, ncv::analyse_topology(mesh, ncv::build_edge_incidence(mesh)));
+    const ncv::EdgeIncidence incidence = ncv::build_edge_incidence(mesh);
+    return ncv::fans_walkable(incidence, ncv::analyse_topology(mesh, incidence));
   };
   CHECK(walkable(fx::box({0, 0, 0}, {1, 1, 1})));
   ncv::Mesh open = fx::box({0, 0, 0}, {1, 1, 1});
