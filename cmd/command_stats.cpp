@@ -28,6 +28,7 @@ void add_stats_command(CLI::App& app, CommandContext& context) {
       *sub, job->options.tolerance,
       "Tolerance zone LOWER:UPPER (e.g. -0.05:0.1), or T for ±T; out of it, exit 1");
   add_report_options(*sub, job->options);
+  add_one_sided_option(*sub, job->options);
   sub->add_option("--histogram-svg", job->files.histogram_svg,
                   "Also draw the area-weighted histogram as SVG");
   add_report_file_options(*sub, job->files);

@@ -65,6 +65,12 @@ void add_report_options(CLI::App& sub, ReportOptions& options) {
   add_units_option(sub, options.units);
 }
 
+void add_one_sided_option(CLI::App& sub, ReportOptions& options) {
+  sub.add_flag("--one-sided", options.one_sided,
+               "Judge one direction's distance file on its own (without it, a part measured in "
+               "one direction that passes is inconclusive: the other direction may fail)");
+}
+
 void add_report_file_options(CLI::App& sub, ReportFiles& files) {
   sub.add_option("--regions-csv", files.regions_csv,
                  "Also list every out-of-tolerance region as CSV");

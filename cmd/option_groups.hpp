@@ -19,6 +19,8 @@ void add_tolerance_option(CLI::App& sub, std::optional<Tolerance>& tolerance,
                           const std::string& description);
 // --bins, --histogram-range, --regions, --units (the tolerance is declared apart).
 void add_report_options(CLI::App& sub, ReportOptions& options);
+// stats' and report's --one-sided (run's is its own: it also measures one direction only).
+void add_one_sided_option(CLI::App& sub, ReportOptions& options);
 // --regions-csv, --histogram-csv.
 void add_report_file_options(CLI::App& sub, ReportFiles& files);
 void add_units_option(CLI::App& sub, std::string& units);

@@ -186,6 +186,8 @@ std::string short_title(const PartReport& r) {
 
 std::string banner_reason(const HtmlReport& report, const NumberStyle& n) {
   std::string reason;
+  if (!report.missing_direction.empty())
+    append(reason, "Not proven: {}. ", report.missing_direction);
   for (const HtmlDirection& d : report.directions) {
     const ErrorStatistics& s = d.report->statistics;
     const std::string title = short_title(*d.report);
@@ -393,6 +395,7 @@ HtmlReport verification_html_report(const VerificationReport& r, std::span<const
   report.units = main.units;
   report.trace = r.trace;
   report.verdict = r.verdict();
+  report.missing_direction = r.missing_direction_reason();
   const HtmlInput sampled{forward ? "workpiece" : "nominal", d.samples.source,
                           hash_hex(d.samples.mesh_hash), d.samples.mesh.triangle_count()};
   const HtmlInput reference{forward ? "nominal" : "workpiece", d.reference.source,

@@ -42,6 +42,7 @@ struct HtmlDirection {
 struct HtmlReport {
   std::string part;
   std::optional<Verdict> verdict;  // the part's, over every direction; none without a tolerance
+  std::string missing_direction;   // why a direction's pass is not the part's (or empty)
   std::string units = "mm";
   Traceability trace;
   std::vector<HtmlInput> inputs;

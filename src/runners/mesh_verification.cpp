@@ -25,8 +25,8 @@ Verification verify(const TriMesh& workpiece, const TriMesh& nominal, const Veri
   if (measured.reverse) {
     verification.reverse = std::make_unique<const DistanceSet>(std::move(*measured.reverse));
   }
-  verification.report =
-      make_verification_report(*verification.forward, verification.reverse.get(), options.report);
+  verification.report = make_verification_report(*verification.forward, verification.reverse.get(),
+                                                 report_options(options));
   verification.colorize = colorize_options(options);
   return verification;
 }

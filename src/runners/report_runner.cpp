@@ -35,6 +35,7 @@ VerificationReport make_verification_report(const DistanceSet& main, const Dista
                                             const ReportOptions& options) {
   // The two directions are independent: made side by side.
   VerificationReport report;
+  report.one_sided = options.one_sided;
   tbb::parallel_invoke([&] { report.main = make_report(main, options); },
                        [&] {
                          if (reverse) report.reverse = make_report(*reverse, options);

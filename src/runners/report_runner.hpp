@@ -22,6 +22,9 @@ struct ReportOptions {
   HistogramOptions histogram;          // 64 bins over [d_min, d_max] unless given
   std::size_t regions = 20;            // regions listed (all are counted)
   std::string units = "mm";            // of the model's coordinates, named in every report
+  // A part measured in one direction only is judged on that direction alone (--one-sided);
+  // otherwise it is at best inconclusive (VerificationReport::one_sided).
+  bool one_sided = false;
 };
 
 PartReport make_report(const DistanceSet& distances, const ReportOptions& options);

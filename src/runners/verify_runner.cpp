@@ -161,6 +161,12 @@ ColorizeOptions colorize_options(const VerifyOptions& options) {
   return colorize;
 }
 
+ReportOptions report_options(const VerifyOptions& options) {
+  ReportOptions report = options.report;
+  report.one_sided = report.one_sided || !options.two_sided;
+  return report;
+}
+
 // The paths the user gave for run's optional outputs, checked before any work.
 void check_given_outputs(const RunJob& job) {
   for (const std::string& path : {job.histogram_svg, job.legend_svg, job.timings}) {
@@ -200,7 +206,7 @@ int run_verification(const RunJob& job) {
   const std::optional<DistanceSet>& reverse = measured.reverse;
 
   VerificationReport report =
-      make_verification_report(forward, reverse ? &*reverse : nullptr, options.report);
+      make_verification_report(forward, reverse ? &*reverse : nullptr, report_options(options));
   report.trace = traceability(job.command_line);
   if (keep_reports) {
     folder.write(folder / (part + ".report.txt"), OutputKind::text,

@@ -29,6 +29,9 @@ struct VerifyOptions {
 
 // How run paints each direction: the colour options with the report's tolerance zone.
 ColorizeOptions colorize_options(const VerifyOptions& options);
+// How run reports: the report options, a direction left out on purpose (one-sided) judged on
+// its own.
+ReportOptions report_options(const VerifyOptions& options);
 
 // What a verification hands on as each step finishes, in order: run logs each step, times it
 // and writes its file; the library (mesh_verification.hpp) keeps only the results.

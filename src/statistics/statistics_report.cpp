@@ -363,9 +363,24 @@ std::optional<Verdict> PartReport::verdict() const {
 }
 
 std::optional<Verdict> VerificationReport::verdict() const {
-  const std::optional<Verdict> forward = main.verdict();
-  if (!forward || !reverse) return forward;
-  return worse(*forward, *reverse->verdict());
+  const std::optional<Verdict> first = main.verdict();
+  if (!first) return first;
+  if (reverse) return worse(*first, *reverse->verdict());
+  if (*first == Verdict::pass && !one_sided) return Verdict::inconclusive;
+  return first;
+}
+
+std::string VerificationReport::missing_direction_reason() const {
+  if (reverse || one_sided || main.verdict() != Verdict::pass) return {};
+  if (forward(main)) {
+    return "only the workpiece was measured against the nominal, and a nominal feature the "
+           "workpiece lacks (a slot never cut) is not seen from that side: give the reverse "
+           "distance file too (`distance --reverse`), or --one-sided to judge this direction "
+           "alone";
+  }
+  return "only the nominal was measured against the workpiece, and material the workpiece has "
+         "beyond the nominal's surface (a fin left standing) is not seen from that side: give "
+         "the forward distance file too, or --one-sided to judge this direction alone";
 }
 
 std::optional<double> VerificationReport::hausdorff() const {
@@ -381,6 +396,9 @@ nlohmann::json report_json(const VerificationReport& report) {
   }
   if (const std::optional<Verdict> verdict = report.verdict()) {
     j["verdict"] = name_of(kVerdictNames, *verdict);
+    if (const std::string why = report.missing_direction_reason(); !why.empty()) {
+      j["reason"] = why;
+    }
   }
   j["units"] = report.main.units;
   j["traceability"] = traceability_json(report);
@@ -399,6 +417,9 @@ std::string report_text(const VerificationReport& report) {
   text_tolerance(reports, numbers, out);
   if (const std::optional<Verdict> verdict = report.verdict()) {
     append(out, "\nverdict     {}\n", verdict_word(*verdict));
+    if (const std::string why = report.missing_direction_reason(); !why.empty()) {
+      append(out, "            {}\n", why);
+    }
   }
   return fmt::to_string(out);
 }

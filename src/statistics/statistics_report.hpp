@@ -51,14 +51,21 @@ struct Traceability {
 };
 
 // A part's report: `main` is the forward direction, or the only direction measured; `reverse`
-// is there when both were. The part fails when either direction does.
+// is there when both were. The part fails when either direction does, and passes only when
+// both pass, or when the one direction measured passes and was asked for alone (`one_sided`):
+// each direction misses what only the other sees (docs/METHOD.md "Both directions").
 struct VerificationReport {
   PartReport main;
   std::optional<PartReport> reverse;
+  bool one_sided = false;  // one direction judged on its own (--one-sided)
   Traceability trace{};
 
-  // The worse of the directions' verdicts; none without a tolerance.
+  // The worse of the directions' verdicts, a pass of one direction alone inconclusive unless
+  // one_sided; none without a tolerance.
   std::optional<Verdict> verdict() const;
+  // Why the verdict is inconclusive when only one direction was measured and it passes: the
+  // direction missing, what it would have seen and how to give it; empty otherwise.
+  std::string missing_direction_reason() const;
   bool fails() const { return verdict() == Verdict::fail; }
   // The two-sided Hausdorff distance: the larger max |d| of the two directions.
   std::optional<double> hausdorff() const;

@@ -48,6 +48,14 @@ check "the pipeline's steps succeed" test -s n.dist
 "$NCVERIFY" -q stats w.dist n.dist --tol 0.6 --format json > steps.json
 check "stats of both files: exit status 1 (out of tolerance)" test "${PIPESTATUS[0]}" = 0 -o -s steps.json
 expect_status 1 "stats of both files fails the part" "$NCVERIFY" -q stats n.dist w.dist --tol 0.6
+# The forward file alone passes ±0.6 in its direction, but cannot pass the part: the slot is
+# seen from the nominal only. Inconclusive (exit 3), saying so, unless asked for one-sided.
+expect_status 3 "stats of the forward file alone is inconclusive" "$NCVERIFY" -q stats w.dist --tol 0.6
+"$NCVERIFY" -q stats w.dist --tol 0.6 > alone.txt
+check "and says the reverse direction is missing" grep -q "only the workpiece was measured against the nominal.*--one-sided" alone.txt
+expect_status 0 "stats --one-sided judges the forward file on its own" "$NCVERIFY" -q stats w.dist --tol 0.6 --one-sided
+expect_status 3 "report of the forward file alone is inconclusive" "$NCVERIFY" -q report w.dist --tol 0.6 -o alone.html
+check "its banner says why" grep -q "Not proven: only the workpiece was measured" alone.html
 check "steps and run agree on both directions, to the bit" /usr/bin/python3 -c "
 import json
 a, b = json.load(open('steps.json')), json.load(open('slot/slot_uncut.report.json'))

@@ -41,7 +41,7 @@ TEST_CASE("boundary loops: a square hole is one loop of four edges", "[boundary-
   CHECK(loops[0].start[2] == 3);
 }
 
-TEST_CASE("boundary loops: two holes, two loops; adjacent holes merge", "[boundary-loops]") {
+TEST_CASE("boundary loops: two holes, two loops, adjacent holes merge", "[boundary-loops]") {
   const auto two = loops_of(box_without({2, 3, 8, 9}));  // top and x = 0 share an edge
   REQUIRE(two.size() == 1);
   CHECK(two[0].edges == 6);

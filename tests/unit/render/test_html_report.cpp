@@ -135,3 +135,23 @@ TEST_CASE("a part not proven within tolerance gets the inconclusive banner and i
   CHECK_THAT(html, Catch::Contains("max, proven"));
   CHECK_THAT(html, Catch::Contains("\u2264 0.95"));
 }
+
+TEST_CASE("one direction that passes, not asked for alone, gets the inconclusive banner",
+          "[html][verdict]") {
+  DistanceSet part = plate();
+  Certificate c;
+  c.width_asked = 0.001;
+  c.max = {0.8, Vec3(10, 0, 0), 0.8, Vec3(10, 0, 0)};
+  c.min = {-0.2, Vec3(0, 0, 0), -0.2, Vec3(0, 0, 0)};
+  c.sign_proven = true;
+  part.certificate = c;
+  const ColorMap maps[] = {make_color_map(ColorMapKind::diverging, {-0.8, 0.8}, std::nullopt)};
+  VerificationReport report{make_part_report(part, Tolerance{-0.3, 0.9}, {}), std::nullopt};
+  const std::string alone = html_report(verification_html_report(report, maps));
+  CHECK_THAT(alone, Catch::Contains("ncv-verdict ncv-inconclusive"));
+  CHECK_THAT(alone, Catch::Contains("Not proven: only the workpiece was measured"));
+  report.one_sided = true;
+  const std::string chosen = html_report(verification_html_report(report, maps));
+  CHECK_THAT(chosen, Catch::Contains("ncv-verdict ncv-pass"));
+  CHECK_THAT(chosen, !Catch::Contains("Not proven"));
+}

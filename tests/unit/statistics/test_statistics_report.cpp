@@ -32,6 +32,11 @@ DistanceSet linear_field_part() {
   return set;
 }
 
+// One direction judged on its own, as `stats --one-sided` and `run --one-sided` judge it.
+VerificationReport one_sided(PartReport report) {
+  return {std::move(report), std::nullopt, true};
+}
+
 std::vector<std::string> csv_fields(const std::string& line) {
   std::vector<std::string> fields(1);
   bool quoted = false;
@@ -68,21 +73,21 @@ TEST_CASE("the JSON report carries the statistics and the verdict", "[report]") 
 
 TEST_CASE("a passing part exits 0, and without a tolerance there is no verdict", "[report]") {
   const DistanceSet part = linear_field_part();
-  CHECK(verdict_status({make_part_report(part, Tolerance{-0.3, 0.9}, {}), {}}) == 0);
+  CHECK(verdict_status(one_sided(make_part_report(part, Tolerance{-0.3, 0.9}, {}))) == 0);
   const VerificationReport none{make_part_report(part, std::nullopt, {}), {}};
   CHECK(verdict_status(none) == 0);
   CHECK_FALSE(report_json(none).contains("tolerance"));
   CHECK_FALSE(report_json(none).contains("verdict"));
 }
 
-TEST_CASE("pass needs certified bounds in the zone; samples alone are inconclusive",
+TEST_CASE("pass needs certified bounds in the zone, samples alone are inconclusive",
           "[report][verdict]") {
   DistanceSet part = linear_field_part();
   const Tolerance zone{-0.3, 0.9};
-  CHECK(verdict_status({make_part_report(part, zone, {}), {}}) == 0);
+  CHECK(verdict_status(one_sided(make_part_report(part, zone, {}))) == 0);
   // Between the samples the error may reach 0.95: not proven, exit status 3.
   part.certificate->max.bound = 0.95;
-  const VerificationReport unproven{make_part_report(part, zone, {}), {}};
+  const VerificationReport unproven = one_sided(make_part_report(part, zone, {}));
   CHECK(unproven.verdict() == Verdict::inconclusive);
   CHECK(verdict_status(unproven) == 3);
   CHECK(report_json(unproven)["verdict"] == "inconclusive");
@@ -111,7 +116,7 @@ TEST_CASE("CSV rows have the header's columns, numbers round-trip", "[report]") 
   const DistanceSet part = linear_field_part();
   for (const std::optional<Tolerance> tolerance :
        {std::optional<Tolerance>{}, std::optional<Tolerance>{Tolerance{-1, 1}}}) {
-    const VerificationReport report{make_part_report(part, tolerance, {}), {}};
+    const VerificationReport report = one_sided(make_part_report(part, tolerance, {}));
     const auto header = csv_fields(report_csv_header());
     const auto row = csv_fields(report_csv_row(report));
     REQUIRE(header.size() == row.size());
@@ -190,6 +195,53 @@ TEST_CASE("both directions: the reverse object, the Hausdorff distance, one verd
   CHECK_THAT(text, Catch::Contains("reverse (nominal samples)"));
   CHECK_THAT(text, Catch::Contains("two-sided Hausdorff distance"));
   CHECK_THAT(text, Catch::EndsWith("verdict     FAIL\n"));
+}
+
+TEST_CASE("one direction passing alone is inconclusive unless judged one-sided",
+          "[report][verdict]") {
+  const DistanceSet forward = linear_field_part();
+  const DistanceSet reverse = reverse_of(forward);
+  const Tolerance zone{-0.3, 0.9};
+  // The forward direction passes [-0.3, 0.9]; the reverse one, not given, would fail it.
+  const VerificationReport alone{make_part_report(forward, zone, {}), std::nullopt};
+  CHECK(alone.main.verdict() == Verdict::pass);
+  CHECK(alone.verdict() == Verdict::inconclusive);
+  CHECK(verdict_status(alone) == 3);
+  const nlohmann::json j = report_json(alone);
+  CHECK(j["tolerance"]["verdict"] == "pass");  // the direction's own verdict stands
+  CHECK(j["verdict"] == "inconclusive");
+  CHECK_THAT(j["reason"].get<std::string>(), Catch::Contains("--one-sided"));
+  CHECK_THAT(j["reason"].get<std::string>(), Catch::Contains("distance --reverse"));
+  CHECK_THAT(report_text(alone), Catch::Contains("verdict     INCONCLUSIVE\n            only the "
+                                                 "workpiece was measured against the nominal"));
+  CHECK(csv_fields(report_csv_row(alone)).back() == "inconclusive");
+  // Judged on its own, it passes, with no reason added.
+  const VerificationReport chosen = one_sided(make_part_report(forward, zone, {}));
+  CHECK(chosen.verdict() == Verdict::pass);
+  CHECK(chosen.missing_direction_reason().empty());
+  CHECK_FALSE(report_json(chosen).contains("reason"));
+  // The reverse file alone: the same, naming what the forward direction would see.
+  const Tolerance wide{-2, 1};
+  const VerificationReport reverse_alone{make_part_report(reverse, wide, {}), std::nullopt};
+  CHECK(reverse_alone.verdict() == Verdict::inconclusive);
+  CHECK_THAT(reverse_alone.missing_direction_reason(),
+             Catch::Contains("only the nominal was measured against the workpiece"));
+  // A failing direction fails the part whatever was measured the other way.
+  const VerificationReport failing{make_part_report(forward, Tolerance{-0.1, 0.5}, {}),
+                                   std::nullopt};
+  CHECK(failing.verdict() == Verdict::fail);
+  CHECK(failing.missing_direction_reason().empty());
+  // An inconclusive direction stays inconclusive, for its own reason.
+  DistanceSet unproven = forward;
+  unproven.certificate->max.bound = 0.95;
+  const VerificationReport doubt{make_part_report(unproven, zone, {}), std::nullopt};
+  CHECK(doubt.verdict() == Verdict::inconclusive);
+  CHECK(doubt.missing_direction_reason().empty());
+  // Both directions given: no reason needed, whatever one_sided says.
+  const VerificationReport both{make_part_report(forward, wide, {}),
+                                make_part_report(reverse, wide, {})};
+  CHECK(both.verdict() == Verdict::pass);
+  CHECK(both.missing_direction_reason().empty());
 }
 
 TEST_CASE("the text report rounds to the part's resolution and names the units", "[report]") {
