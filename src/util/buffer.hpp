@@ -7,7 +7,11 @@
 // Large buffers (4 MiB and up) are aligned to 2 MiB and offered to the kernel for
 // transparent huge pages (madvise; Linux's default THP mode): first touch then faults once
 // per 2 MiB instead of once per 4 KiB, which for the distance step's buffers was a tenth of
-// its time. Where huge pages are unavailable the advice is ignored.
+// its time. Where huge pages are unavailable the advice is ignored. A freed large buffer is
+// kept, its pages resident, for the next one it can hold (util/buffer.cpp): the kernel
+// clears every fresh page at first touch, and a run's phases free and ask for buffers of
+// about the same sizes; kept buffers are released before fresh pages are mapped, so the
+// peak memory is no higher for them.
 //
 // Only for implicit-lifetime element types (trivially copyable, trivially destructible):
 // the allocation itself creates their objects, so skipping the constructor is well defined;
@@ -29,7 +33,8 @@ namespace ncv {
 namespace detail {
 inline constexpr std::size_t kHugePage = std::size_t{2} << 20;
 inline constexpr std::size_t kHugeBufferBytes = std::size_t{4} << 20;
-void* allocate_huge(std::size_t bytes);  // aligned to kHugePage; throws std::bad_alloc
+void* allocate_huge(std::size_t bytes);               // aligned to kHugePage; throws std::bad_alloc
+void free_huge(void* p, std::size_t bytes) noexcept;  // bytes: as allocated
 }  // namespace detail
 
 template <class T>
@@ -50,7 +55,7 @@ class UninitializedAllocator : public std::allocator<T> {
   }
   void deallocate(T* p, std::size_t n) noexcept {
     if (n * sizeof(T) < detail::kHugeBufferBytes) return std::allocator<T>{}.deallocate(p, n);
-    std::free(p);
+    detail::free_huge(p, n * sizeof(T));
   }
 
   template <class U>
