@@ -34,12 +34,12 @@ void read_grid(ncv::Buffer<char> bytes) {
   const ncv::Container c = ncv::Container::parse(std::move(bytes), "fuzz.grid", ncv::FileKind::grid,
                                                  ncv::kGridFormatVersion);
   const ncv::IndexedReference g = ncv::load_indexed_reference(c);
-  const std::vector<ncv::Vec3> points = query_points(g.mesh);
+  const std::vector<ncv::Vec3> points = query_points(*g.mesh);
   const ncv::SignMethod sign = g.surface->automatic_sign_method();
   const ncv::SearchIndex search(g);
   const ncv::DistanceField field = ncv::compute_signed_distances(search, points, {}, sign);
   for (std::size_t i = 0; i < points.size(); ++i) {
-    if (field.closest_face[i] >= g.mesh.triangle_count()) __builtin_trap();
+    if (field.closest_face[i] >= g.mesh->triangle_count()) __builtin_trap();
   }
 }
 

@@ -40,14 +40,14 @@ nlohmann::json boundary_loops_meta(const ReferenceSurface& s) {
 }
 
 nlohmann::json grid_meta(const IndexedReference& g, const GridStatistics& s) {
-  const BoundingBox box = bounding_box(g.mesh);
+  const BoundingBox box = bounding_box(*g.mesh);
   const ReferenceSurface& nominal = *g.surface;
   return {{"tool", "ncverify " NCV_VERSION},
           {"nominal",
            {{"source", g.source},
             {"hash", hash_hex(g.hash)},
-            {"vertices", g.mesh.vertex_count()},
-            {"triangles", g.mesh.triangle_count()},
+            {"vertices", g.mesh->vertex_count()},
+            {"triangles", g.mesh->triangle_count()},
             {"bbox_min", {box.min[0], box.min[1], box.min[2]}},
             {"bbox_max", {box.max[0], box.max[1], box.max[2]}},
             {"topology", topology_meta(nominal.topology())},
@@ -139,16 +139,16 @@ StoredSurface read_stored_surface(const Container& c, std::uint64_t vertices,
 
 void write_grid_file(const IndexedReference& g, const GridStatistics& statistics, OutputFile& out) {
   ContainerWriter writer(FileKind::grid, kGridFormatVersion, grid_meta(g, statistics));
-  writer.add_points("nominal_vertices", g.mesh.vertices);
-  writer.add<std::uint32_t>("nominal_triangles", flat_indices(g.mesh.triangles),
-                            {g.mesh.triangle_count(), 3});
+  writer.add_points("nominal_vertices", g.mesh->vertices);
+  writer.add<std::uint32_t>("nominal_triangles", flat_indices(g.mesh->triangles),
+                            {g.mesh->triangle_count(), 3});
   // The pseudonormals of a surface held on halfedges, so that `distance` need not rebuild
   // them (docs/FORMATS.md); one held on the arrays is rebuilt from them as before.
   if (g.surface->on_halfedges()) {
     const Pseudonormals& normals = g.surface->normals();
     writer.add_points("vertex_pseudonormals", normals.vertex);
     writer.add_points("edge_pseudonormals", normals.edge);
-    writer.add<std::uint32_t>("edge_of_slot", normals.edge_of_slot, {g.mesh.triangle_count(), 3});
+    writer.add<std::uint32_t>("edge_of_slot", normals.edge_of_slot, {g.mesh->triangle_count(), 3});
   }
   // Each cell's count rather than its offset: most cells of a dense mesh's grid are empty or
   // short, so a byte each instead of eight.
@@ -169,11 +169,13 @@ IndexedReference read_grid_file(const std::string& path) {
 IndexedReference load_indexed_reference(const Container& c) {
   IndexedReference g;
   const std::uint64_t V = c.count("/nominal/vertices"), T = c.count("/nominal/triangles");
-  g.mesh.vertices = c.get_points("nominal_vertices", V);
-  g.mesh.triangles = c.get_rows<std::uint32_t, Triangle>("nominal_triangles", T);
+  Mesh mesh;
+  mesh.vertices = c.get_points("nominal_vertices", V);
+  mesh.triangles = c.get_rows<std::uint32_t, Triangle>("nominal_triangles", T);
   if (!c.field("/nominal/hash").is_string()) c.fail("nominal hash is malformed");
   g.hash = parse_hash_hex(c.field("/nominal/hash").get<std::string>(), c);
-  if (mesh_hash(g.mesh) != g.hash) c.fail("nominal mesh hash does not match");
+  if (mesh_hash(mesh) != g.hash) c.fail("nominal mesh hash does not match");
+  g.mesh = std::make_shared<const Mesh>(std::move(mesh));
   g.source = c.field("/nominal/source").is_string() ? c.field("/nominal/source").get<std::string>()
                                                     : std::string("nominal");
   const nlohmann::json& from = c.field("/nominal/topology_from");
@@ -182,9 +184,9 @@ IndexedReference load_indexed_reference(const Container& c) {
   }
   if (from == "openmesh") {
     g.surface =
-        std::make_unique<ReferenceSurface>(g.mesh, c.source(), read_stored_surface(c, V, T));
+        std::make_unique<ReferenceSurface>(*g.mesh, c.source(), read_stored_surface(c, V, T));
   } else {
-    g.surface = std::make_unique<ReferenceSurface>(g.mesh, c.source(), SurfaceHolding::arrays);
+    g.surface = std::make_unique<ReferenceSurface>(*g.mesh, c.source(), SurfaceHolding::arrays);
   }
 
   const nlohmann::json& origin = c.field("/grid/origin_local");

@@ -12,9 +12,12 @@
 
 #include "mesh/halfedge_mesh.hpp"
 #include "util/error.hpp"
+#include "util/parallel_over.hpp"
 
 namespace ncv {
 namespace {
+
+constexpr std::size_t kTranslateGrain = 1 << 14;
 
 void check_usable(const Mesh& mesh, const std::string& source) {
   if (mesh.triangle_count() == 0) throw InputError(source, "the nominal mesh has no triangles");
@@ -65,16 +68,21 @@ std::string describe_defects(const TopologyReport& t, double volume_tolerance) {
 
 }  // namespace
 
-void ReferenceSurface::enter_local_frame(Mesh mesh, const std::string& source) {
+// The copy is made translated, in parallel: for the 1.25 M-triangle workpiece a copy then a
+// serial translation took about 15 ms on one thread.
+void ReferenceSurface::enter_local_frame(const Mesh& mesh, const std::string& source) {
   check_usable(mesh, source);
   origin_ = bounding_box(mesh).center();
-  local_ = std::move(mesh);
-  for (Vec3& v : local_.vertices) v = to_local(v);
+  local_.vertices.resize(mesh.vertex_count());
+  parallel_over(mesh.vertex_count(), kTranslateGrain,
+                [&](std::size_t v) { local_.vertices[v] = to_local(mesh.vertices[v]); });
+  local_.triangles = mesh.triangles;
   local_bounds_ = bounding_box(local_);
 }
 
-ReferenceSurface::ReferenceSurface(Mesh mesh, const std::string& source, SurfaceHolding holding) {
-  enter_local_frame(std::move(mesh), source);
+ReferenceSurface::ReferenceSurface(const Mesh& mesh, const std::string& source,
+                                   SurfaceHolding holding) {
+  enter_local_frame(mesh, source);
   EdgeIncidence incidence = build_edge_incidence(local_);
   topology_ = analyse_topology(local_, incidence);
   orient_outward(source);
@@ -90,8 +98,9 @@ ReferenceSurface::ReferenceSurface(Mesh mesh, const std::string& source, Surface
   choose_sign_method(source);
 }
 
-ReferenceSurface::ReferenceSurface(Mesh mesh, const std::string& source, StoredSurface stored) {
-  enter_local_frame(std::move(mesh), source);
+ReferenceSurface::ReferenceSurface(const Mesh& mesh, const std::string& source,
+                                   StoredSurface stored) {
+  enter_local_frame(mesh, source);
   topology_ = stored.topology;
   const auto fail = [&](const char* what) {
     throw InputError(source, fmt::format("the stored {} do not fit the nominal mesh", what));

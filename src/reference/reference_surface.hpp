@@ -74,13 +74,14 @@ class ReferenceSurface {
  public:
   // Throws InputError(source, ...) for a mesh that cannot be used: no triangles, too many,
   // a vertex index out of range, a non-finite or absurdly large coordinate.
-  ReferenceSurface(Mesh mesh, const std::string& source,
+  // The surface keeps its own copy of `mesh`, in its local frame.
+  ReferenceSurface(const Mesh& mesh, const std::string& source,
                    SurfaceHolding holding = SurfaceHolding::halfedges_where_possible);
   // From a grid file: `mesh` as read (before any flip) and what was computed from it on its
   // halfedges. The
   // face normals are made again from the corners (a per-face formula, the same bits), the
   // rest is taken as stored after checking its sizes and indices (InputError otherwise).
-  ReferenceSurface(Mesh mesh, const std::string& source, StoredSurface stored);
+  ReferenceSurface(const Mesh& mesh, const std::string& source, StoredSurface stored);
 
   std::size_t triangle_count() const { return corners_.size(); }
   Vec3 origin() const { return origin_; }
@@ -113,7 +114,7 @@ class ReferenceSurface {
   Vec3 pseudonormal(std::size_t triangle, TriangleFeature feature) const;
 
  private:
-  void enter_local_frame(Mesh mesh, const std::string& source);
+  void enter_local_frame(const Mesh& mesh, const std::string& source);
   void orient_outward(const std::string& source);
   void choose_sign_method(const std::string& source);
   void copy_corners();

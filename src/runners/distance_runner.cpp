@@ -136,10 +136,10 @@ void check_parts(const Mesh& workpiece, const std::string& workpiece_source, con
 DistanceSet measure_distances(SampleSet samples, const IndexedReference& reference,
                               const DistanceOptions& options, double* seconds) {
   if (options.direction == Direction::forward) {
-    refuse_if_apart(bounding_box(samples.mesh), samples.source, bounding_box(reference.mesh),
+    refuse_if_apart(bounding_box(samples.mesh), samples.source, bounding_box(*reference.mesh),
                     reference.source);
   } else {
-    refuse_if_apart(bounding_box(reference.mesh), reference.source, bounding_box(samples.mesh),
+    refuse_if_apart(bounding_box(*reference.mesh), reference.source, bounding_box(samples.mesh),
                     samples.source);
   }
   if (options.certify) {
@@ -190,8 +190,8 @@ DistanceSet measure_distances(SampleSet samples, const IndexedReference& referen
 
   result.direction = options.direction;
   result.samples = std::move(samples);
-  result.reference = {reference.source, reference.hash, reference.mesh.triangle_count(),
-                      bounding_box(reference.mesh)};
+  result.reference = {reference.source, reference.hash, reference.mesh->triangle_count(),
+                      bounding_box(*reference.mesh)};
   result.sign_method = std::string(name_of(kSignMethodNames, method));
   result.search = options.brute_force ? "brute-force" : "grid";
   result.triangles_tested = statistics.triangles_tested;
@@ -216,9 +216,9 @@ void run_distance(const DistanceJob& job) {
   SampleSet samples = load_sample_set(samples_file);
   const IndexedReference reference = read_grid_file(job.grid);
   if (job.options.direction == Direction::forward) {
-    check_parts(samples.mesh, samples.source, reference.mesh, reference.source);
+    check_parts(samples.mesh, samples.source, *reference.mesh, reference.source);
   } else {
-    check_parts(reference.mesh, reference.source, samples.mesh, samples.source);
+    check_parts(*reference.mesh, reference.source, samples.mesh, samples.source);
   }
   double seconds = 0;
   const DistanceSet result =

@@ -13,8 +13,8 @@
 
 namespace ncv {
 
-IndexedSurface index_surface(Mesh mesh, const std::string& source, const GridOptions& options,
-                             SurfaceHolding holding) {
+IndexedSurface index_surface(std::shared_ptr<const Mesh> mesh, const std::string& source,
+                             const GridOptions& options, SurfaceHolding holding) {
   Stopwatch clock;
   IndexedSurface indexed;
   indexed.reference =
@@ -71,7 +71,7 @@ void log_grid(const IndexedSurface& indexed) {
   spdlog::info(
       "{}: {} triangles, {} vertices; closed: {}, manifold: {}, consistently oriented: "
       "{}; sign by {}",
-      g.source, g.mesh.triangle_count(), g.mesh.vertex_count(), t.closed() ? "yes" : "no",
+      g.source, g.mesh->triangle_count(), g.mesh->vertex_count(), t.closed() ? "yes" : "no",
       t.manifold() ? "yes" : "no", t.consistently_oriented() ? "yes" : "no",
       name_of(kSignMethodNames, g.surface->automatic_sign_method()));
   log_boundary_loops(g);
@@ -101,7 +101,8 @@ void log_grid(const IndexedSurface& indexed) {
 void run_grid_build(const GridJob& job) {
   Stopwatch clock;
   OutputFile out(job.output, OutputKind::binary);
-  IndexedSurface indexed = index_surface(read_mesh(job.mesh), input_name(job.mesh), job.options);
+  IndexedSurface indexed = index_surface(std::make_shared<const Mesh>(read_mesh(job.mesh)),
+                                         input_name(job.mesh), job.options);
   write_grid_file(indexed.reference, indexed.statistics, out);
   out.commit();
   indexed.seconds = clock.seconds();

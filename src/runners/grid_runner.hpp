@@ -16,7 +16,8 @@ struct IndexedSurface {
   double seconds = 0;
 };
 
-IndexedSurface index_surface(Mesh mesh, const std::string& source, const GridOptions& options,
+IndexedSurface index_surface(std::shared_ptr<const Mesh> mesh, const std::string& source,
+                             const GridOptions& options,
                              SurfaceHolding holding = SurfaceHolding::halfedges_where_possible);
 // The topology, the sign method it implies and the grid, on stderr.
 void log_grid(const IndexedSurface& indexed);

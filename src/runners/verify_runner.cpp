@@ -99,16 +99,12 @@ StepHooks logging_and_writing(const std::optional<std::array<DirectionFiles, 2>>
   return hooks;
 }
 
-// A mesh the caller still needs later is copied, else moved.
-Mesh take(Mesh& mesh, bool needed_later) {
-  return needed_later ? mesh : std::move(mesh);
-}
-
 // One direction's steps: sample, index the reference, measure.
 DistanceSet measure_direction(Mesh sampled_mesh, const std::string& sampled_source,
-                              Mesh reference_mesh, const std::string& reference_source,
-                              const SampleOptions& sampling, const VerifyOptions& options,
-                              Direction direction, const StepHooks& hooks) {
+                              std::shared_ptr<const Mesh> reference_mesh,
+                              const std::string& reference_source, const SampleOptions& sampling,
+                              const VerifyOptions& options, Direction direction,
+                              const StepHooks& hooks) {
   SampledSurface sampled = sample_surface(std::move(sampled_mesh), sampled_source, sampling);
   if (hooks.sampled) hooks.sampled(sampled, direction);
   // The reverse direction's reference, the workpiece, on the arrays (reference_surface.hpp).
@@ -142,14 +138,19 @@ Measurements measure_part(Mesh workpiece, const std::string& workpiece_source, M
                           const std::string& nominal_source, const VerifyOptions& options,
                           const StepHooks& hooks) {
   Measurements measured;
-  measured.forward = measure_direction(take(workpiece, options.two_sided), workpiece_source,
-                                       take(nominal, options.two_sided), nominal_source,
-                                       options.sampling, options, Direction::forward, hooks);
+  // The nominal (small) is copied for the reverse direction's samples; the workpiece is not:
+  // the reverse direction measures against the forward samples' own (which outlive it).
+  Mesh nominal_to_sample = options.two_sided ? nominal : Mesh{};
+  measured.forward = measure_direction(
+      std::move(workpiece), workpiece_source, std::make_shared<const Mesh>(std::move(nominal)),
+      nominal_source, options.sampling, options, Direction::forward, hooks);
   if (options.two_sided) {
+    const Mesh& sampled_workpiece = measured.forward.samples.mesh;
     measured.reverse = measure_direction(
-        std::move(nominal), nominal_source, std::move(workpiece), workpiece_source,
-        reverse_sampling(measured.forward.samples, options.sampling), options, Direction::reverse,
-        hooks);
+        std::move(nominal_to_sample), nominal_source,
+        std::shared_ptr<const Mesh>(std::shared_ptr<const Mesh>{}, &sampled_workpiece),
+        workpiece_source, reverse_sampling(measured.forward.samples, options.sampling), options,
+        Direction::reverse, hooks);
   }
   return measured;
 }

@@ -17,7 +17,9 @@
 namespace ncv {
 
 struct IndexedReference {
-  Mesh mesh;  // as read, in global coordinates: what the grid file stores
+  // The mesh as read, in global coordinates (what the grid file stores); shared, as run's
+  // reverse direction measures against the workpiece its forward samples hold.
+  std::shared_ptr<const Mesh> mesh;
   std::string source;
   std::uint64_t hash = 0;  // mesh_hash(mesh)
   std::unique_ptr<ReferenceSurface> surface;
@@ -25,6 +27,10 @@ struct IndexedReference {
 };
 
 // Prepares the surface (topology, orientation, sign method) and builds its grid.
+IndexedReference index_reference(std::shared_ptr<const Mesh> mesh, const std::string& source,
+                                 const GridOptions& options = {},
+                                 GridStatistics* statistics = nullptr,
+                                 SurfaceHolding holding = SurfaceHolding::halfedges_where_possible);
 IndexedReference index_reference(Mesh mesh, const std::string& source,
                                  const GridOptions& options = {},
                                  GridStatistics* statistics = nullptr,
