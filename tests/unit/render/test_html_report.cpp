@@ -21,6 +21,19 @@ DistanceSet plate() {
   return set;
 }
 
+// The plate with d from -0.2 to 0.8 measured, the min proven there and the max bounded by
+// max_bound near `at`.
+DistanceSet certified_plate(double max_bound, Vec3 at) {
+  DistanceSet part = plate();
+  Certificate c;
+  c.width_asked = 0.001;
+  c.max = {0.8, Vec3(10, 0, 0), max_bound, at};
+  c.min = {-0.2, Vec3(0, 0, 0), -0.2, Vec3(0, 0, 0)};
+  c.sign_proven = true;
+  part.certificate = c;
+  return part;
+}
+
 std::string element_text(const std::string& html, const std::string& opening) {
   const std::size_t at = html.find(opening);
   REQUIRE(at != std::string::npos);
@@ -117,15 +130,9 @@ TEST_CASE("text that would end a script element is escaped in the page's data", 
 
 TEST_CASE("a part not proven within tolerance gets the inconclusive banner and its bounds",
           "[html]") {
-  DistanceSet part = plate();
   // Measured within [-0.3, 0.9] (d runs from -0.2 to 0.8), but between the samples the error
   // may reach 0.95.
-  Certificate c;
-  c.width_asked = 0.001;
-  c.max = {0.8, Vec3(10, 0, 0), 0.95, Vec3(9.5, 1, 0)};
-  c.min = {-0.2, Vec3(0, 0, 0), -0.2, Vec3(0, 0, 0)};
-  c.sign_proven = true;
-  part.certificate = c;
+  const DistanceSet part = certified_plate(0.95, Vec3(9.5, 1, 0));
   const VerificationReport report{make_part_report(part, Tolerance{-0.3, 0.9}, {}), {}};
   const ColorMap maps[] = {make_color_map(ColorMapKind::diverging, {-0.8, 0.8}, std::nullopt)};
   const std::string html = html_report(verification_html_report(report, maps));
@@ -138,13 +145,7 @@ TEST_CASE("a part not proven within tolerance gets the inconclusive banner and i
 
 TEST_CASE("one direction that passes, not asked for alone, gets the inconclusive banner",
           "[html][verdict]") {
-  DistanceSet part = plate();
-  Certificate c;
-  c.width_asked = 0.001;
-  c.max = {0.8, Vec3(10, 0, 0), 0.8, Vec3(10, 0, 0)};
-  c.min = {-0.2, Vec3(0, 0, 0), -0.2, Vec3(0, 0, 0)};
-  c.sign_proven = true;
-  part.certificate = c;
+  const DistanceSet part = certified_plate(0.8, Vec3(10, 0, 0));
   const ColorMap maps[] = {make_color_map(ColorMapKind::diverging, {-0.8, 0.8}, std::nullopt)};
   VerificationReport report{make_part_report(part, Tolerance{-0.3, 0.9}, {}), std::nullopt};
   const std::string alone = html_report(verification_html_report(report, maps));
