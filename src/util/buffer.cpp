@@ -29,7 +29,11 @@ std::size_t rounded_size(std::size_t bytes) {
   return (bytes + kHugePage - 1) / kHugePage * kHugePage;
 }
 
+}  // namespace
+
 #if NCV_KEEP_FREED_BUFFERS
+
+namespace {
 
 // Freed huge buffers, their pages still resident, kept for the next buffers that fit: a new
 // buffer's first touch makes the kernel clear every page it faults in (13-16 % of a
