@@ -87,7 +87,6 @@ class ReferenceSurface {
   Vec3 origin() const { return origin_; }
   Vec3 to_local(Vec3 global) const { return global - origin_; }
 
-  const Mesh& local_mesh() const { return local_; }
   std::span<const TriangleCorners> corners() const { return corners_; }
   const TriangleCorners& corners(std::size_t triangle) const { return corners_[triangle]; }
   const BoundingBox& local_bounds() const { return local_bounds_; }
