@@ -362,16 +362,24 @@ std::optional<Verdict> PartReport::verdict() const {
   return judge(statistics, distances->certificate, statistics.tolerance->tolerance);
 }
 
+namespace {
+
+// One direction measured, passing, not asked for alone: the part is not proven by it.
+bool awaits_other_direction(const VerificationReport& r) {
+  return !r.reverse && !r.one_sided && r.main.verdict() == Verdict::pass;
+}
+
+}  // namespace
+
 std::optional<Verdict> VerificationReport::verdict() const {
+  if (awaits_other_direction(*this)) return Verdict::inconclusive;
   const std::optional<Verdict> first = main.verdict();
-  if (!first) return first;
-  if (reverse) return worse(*first, *reverse->verdict());
-  if (*first == Verdict::pass && !one_sided) return Verdict::inconclusive;
-  return first;
+  if (!first || !reverse) return first;
+  return worse(*first, *reverse->verdict());
 }
 
 std::string VerificationReport::missing_direction_reason() const {
-  if (reverse || one_sided || main.verdict() != Verdict::pass) return {};
+  if (!awaits_other_direction(*this)) return {};
   if (forward(main)) {
     return "only the workpiece was measured against the nominal, and a nominal feature the "
            "workpiece lacks (a slot never cut) is not seen from that side: give the reverse "
