@@ -9,24 +9,20 @@ namespace ncv {
 
 double lattice_triangle_area(const SampleSet& samples, std::size_t t) {
   const double steps = samples.lattice_sizes[t] - 1.0;
-  return triangle_area(samples.mesh, t) / (steps * steps);
+  return samples.triangle_areas[t] / (steps * steps);
 }
 
-Buffer<LinearPatch> lattice_patches(const SampleSet& samples, std::span<const double> d,
-                                    Buffer<double>* triangle_areas) {
+Buffer<LinearPatch> lattice_patches(const SampleSet& samples, std::span<const double> d) {
   const std::size_t triangles = samples.lattice_sizes.size();
   const Buffer<std::uint64_t> first = block_offsets(
       triangles, [&](std::size_t t) { return lattice_triangle_count(samples.lattice_sizes[t]); });
-  if (triangle_areas) triangle_areas->resize(triangles);
   Buffer<LinearPatch> patches(first[triangles]);
   const Mesh& mesh = samples.mesh;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles, 1024), [&](const auto& range) {
     for (std::size_t t = range.begin(); t != range.end(); ++t) {
       const std::uint32_t n = samples.lattice_sizes[t];
-      if (n < 2 && !triangle_areas) continue;
-      const double whole = triangle_area(mesh, t);
-      if (triangle_areas) (*triangle_areas)[t] = whole;
       if (n < 2) continue;
+      const double whole = samples.triangle_areas[t];
       LinearPatch* out = patches.data() + first[t];
       if (n == 2) {  // most triangles of a fine mesh: one sub-triangle, the corners' samples
         const auto& corner = mesh.triangles[t];

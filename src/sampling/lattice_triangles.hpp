@@ -45,9 +45,7 @@ void for_each_lattice_triangle(const SampleSet& samples, std::size_t t, Visit&& 
 
 // Every sub-triangle of every sampled triangle as a linear patch of the distances d (one
 // per sample), triangle by triangle in mesh order. Filled in parallel, each patch written
-// once (no serial zero-fill first). With triangle_areas, each mesh triangle's area
-// (triangle_area) is kept there too, computed once for both.
-Buffer<LinearPatch> lattice_patches(const SampleSet& samples, std::span<const double> d,
-                                    Buffer<double>* triangle_areas = nullptr);
+// once (no serial zero-fill first).
+Buffer<LinearPatch> lattice_patches(const SampleSet& samples, std::span<const double> d);
 
 }  // namespace ncv

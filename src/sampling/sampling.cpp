@@ -173,6 +173,7 @@ SamplingPlan plan_sampling(const Mesh& mesh, double step, SamplingScheme scheme)
   plan.step = step;
   plan.scheme = scheme;
   plan.lattice_sizes.resize(mesh.triangle_count());
+  plan.triangle_areas.resize(mesh.triangle_count());
   std::vector<std::uint32_t>& sizes = plan.lattice_sizes;
   plan.counts = ordered_reduce(
       sizes.size(), kTriangleBlock, SamplingReport{},
@@ -180,6 +181,7 @@ SamplingPlan plan_sampling(const Mesh& mesh, double step, SamplingScheme scheme)
         SamplingReport part;
         for (std::size_t t = begin; t < end; ++t) {
           const double area = triangle_area(mesh, t);
+          plan.triangle_areas[t] = area;
           const std::uint32_t n = lattice_size(area, step);
           sizes[t] = n >= 2 ? n : scheme == SamplingScheme::all ? 2u : 0u;
           if (n < 2) ++part.small_triangles;
@@ -227,6 +229,7 @@ SampleSet sample_mesh(Mesh mesh, SamplingPlan plan, SamplingReport* report,
   set.scheme = plan.scheme;
   set.mesh_hash = mesh_hash(set.mesh);
   set.lattice_sizes = std::move(plan.lattice_sizes);
+  set.triangle_areas = std::move(plan.triangle_areas);
 
   const std::vector<std::uint32_t> owner_of_vertex = number_vertex_samples(set);
   const std::uint64_t vertex_samples =

@@ -53,7 +53,11 @@ struct SampleSet {
   SamplingScheme scheme = SamplingScheme::all;
   std::uint64_t mesh_hash = 0;
 
-  std::vector<std::uint32_t> lattice_sizes;     // lattice size per triangle; 0 = not sampled
+  std::vector<std::uint32_t> lattice_sizes;  // lattice size per triangle; 0 = not sampled
+  // Each triangle's area (triangle_area), from the plan: the statistics weigh every lattice
+  // sub-triangle by it, and gathering three corners a triangle again cost them 15-18 % of
+  // their time on a workpiece whose triangles come in random order (docs/PERFORMANCE.md).
+  Buffer<double> triangle_areas;
   Buffer<std::uint64_t> first_interior_sample;  // first own (non-corner) sample of each triangle
   std::vector<std::uint32_t> vertex_sample;     // sample of each mesh vertex, or kNoSample
 
@@ -104,6 +108,7 @@ struct SamplingPlan {
   double step = 0;
   SamplingScheme scheme = SamplingScheme::all;
   std::vector<std::uint32_t> lattice_sizes;  // per triangle; 0 = not sampled
+  Buffer<double> triangle_areas;             // per triangle, as triangle_area gives it
   SamplingReport counts;                     // small_triangles, degenerate_triangles, surface_area
 };
 

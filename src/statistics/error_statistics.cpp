@@ -35,9 +35,8 @@ struct TriangleCounts {
   std::uint64_t unsampled = 0;
 };
 
-// areas: each triangle's area, as triangle_area gives it (lattice_patches keeps them).
-void count_triangles(const SampleSet& samples, std::span<const double> areas,
-                     ErrorStatistics& stats) {
+void count_triangles(const SampleSet& samples, ErrorStatistics& stats) {
+  const std::span<const double> areas = samples.triangle_areas;
   const Mesh& mesh = samples.mesh;
   const TriangleCounts counts = ordered_reduce(
       mesh.triangle_count(), kPatchBlock, TriangleCounts{},
@@ -195,9 +194,8 @@ ErrorStatistics compute_error_statistics(const SampleSet& samples, std::span<con
   check_distances(samples, d);
   ErrorStatistics stats;
   stats.samples = d.size();
-  Buffer<double> triangle_areas;
-  const Buffer<LinearPatch> patches = lattice_patches(samples, d, &triangle_areas);
-  count_triangles(samples, triangle_areas, stats);
+  const Buffer<LinearPatch> patches = lattice_patches(samples, d);
+  count_triangles(samples, stats);
   find_extremes(samples, d, stats);
 
   const HistogramSums histogram_sums(
