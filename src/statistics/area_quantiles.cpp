@@ -75,7 +75,8 @@ std::vector<double> area_at_most_each(std::span<const LinearPatch> patches,
             part[m + last] += p.area;
             continue;
           }
-          // The splits in [lo, hi), walked rather than searched: a patch spans few.
+          // The splits in [lo, hi), walked rather than searched: a patch spans few (all of
+          // them only where the splits crowd into rounding noise).
           const std::size_t first = lower_bound_index(splits, p.lo);
           std::size_t whole = first;
           while (whole < m && splits[whole] < p.hi) ++whole;
