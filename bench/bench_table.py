@@ -241,9 +241,15 @@ def yardstick(stages):
 
 
 def yardstick_stages():
-    """The workloads of the yardstick: both families' stages, and the decimated finishing part
-    shuffled and far from the origin (when the second family has been generated)."""
+    """The workloads of the yardstick: both families' stages, the decimated finishing part
+    shuffled and far from the origin (when the second family has been generated), and two
+    prismatic parts whose flat faces lie on their nominal's (their errors mostly rounding
+    noise around zero, the statistics' hardest case)."""
     stages = [("ncgen", stage, os.path.join(LARGE, file), NOMINAL) for stage, file in STAGES]
+    stages += [("prismatic", stage, os.path.join(LARGE, workpiece), os.path.join(LARGE, nominal))
+               for stage, workpiece, nominal in (
+                   ("slot uncut", "slot_uncut.stl", "slot_nominal.stl"),
+                   ("box scallop", "box_scallop.stl", "box_nominal.stl"))]
     if os.path.exists(DECIMATED_NOMINAL):
         stages += [("decimated", stage, os.path.join(DECIMATED, file), DECIMATED_NOMINAL)
                    for stage, file in STAGES]
@@ -272,6 +278,8 @@ def yardstick_section(p):
     p("  goal (issue 24): ratio >= 5 on 2 threads, every stage; 1 thread no worse than 2")
     p("  decimated: ncgen all --family decimated (samples/large/decimated/); finishing far: "
       "its triangles shuffled, it and its nominal moved by (20000, -15000, 5000) mm")
+    p("  prismatic: ncgen's slot part (the slot never cut) and box with scallops, flat faces "
+      "on the nominal's")
     p("  stats s: run's stats phase, one direction (--one-sided)")
     p("")
 
