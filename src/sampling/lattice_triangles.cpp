@@ -22,17 +22,15 @@ Buffer<LinearPatch> lattice_patches(const SampleSet& samples, std::span<const do
     for (std::size_t t = range.begin(); t != range.end(); ++t) {
       const std::uint32_t n = samples.lattice_sizes[t];
       if (n < 2) continue;
-      const double whole = samples.triangle_areas[t];
       LinearPatch* out = patches.data() + first[t];
       if (n == 2) {  // most triangles of a fine mesh: one sub-triangle, the corners' samples
         const auto& corner = mesh.triangles[t];
-        *out = make_linear_patch(whole, d[samples.vertex_sample[corner[0]]],
+        *out = make_linear_patch(samples.triangle_areas[t], d[samples.vertex_sample[corner[0]]],
                                  d[samples.vertex_sample[corner[1]]],
                                  d[samples.vertex_sample[corner[2]]]);
         continue;
       }
-      const double steps = n - 1.0;
-      const double area = whole / (steps * steps);  // lattice_triangle_area
+      const double area = lattice_triangle_area(samples, t);
       for_each_lattice_triangle(samples, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
         *out++ = make_linear_patch(area, d[a], d[b], d[c]);
       });
