@@ -6,6 +6,10 @@
 
 #include <algorithm>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace ncv {
 
 struct LinearPatch {
@@ -13,14 +17,41 @@ struct LinearPatch {
   double lo = 0, mid = 0, hi = 0;  // the three corner values, ascending
 };
 
+namespace detail {
+
+// std::min(x, y) and std::max(x, y) to the bit, signed zeros included, as SSE2's minsd and
+// maxsd: GCC compiled std::min and std::max in make_linear_patch to a compare and branch each
+// where the patches are made a range at a time (sampling/lattice_triangles.cpp), and those
+// branches mispredicted about once a patch. minsd(y, x) is y < x ? y : x and maxsd(y, x)
+// is y > x ? y : x, x on equality: std::min's and std::max's choices.
+inline double min_of(double x, double y) {
+#if defined(__SSE2__)
+  return _mm_cvtsd_f64(_mm_min_sd(_mm_set_sd(y), _mm_set_sd(x)));
+#else
+  return std::min(x, y);
+#endif
+}
+
+inline double max_of(double x, double y) {
+#if defined(__SSE2__)
+  return _mm_cvtsd_f64(_mm_max_sd(_mm_set_sd(y), _mm_set_sd(x)));
+#else
+  return std::max(x, y);
+#endif
+}
+
+}  // namespace detail
+
 // The three compare-and-swap steps (a, b), (b, c), (a, b) of a sorting network, each as
-// std::min and std::max, which pick exactly what `if (x > y) swap(x, y)` leaves (signed
-// zeros included) without a branch: the corner values of neighbouring patches come in any
-// order, and the branches mispredicted about once a patch.
-constexpr LinearPatch make_linear_patch(double area, double a, double b, double c) {
-  const double a1 = std::min(a, b), b1 = std::max(b, a);
-  const double b2 = std::min(b1, c), c2 = std::max(c, b1);
-  return {area, std::min(a1, b2), std::max(b2, a1), c2};
+// std::min and std::max give them, which pick exactly what `if (x > y) swap(x, y)` leaves
+// (signed zeros included) without a branch: the corner values of neighbouring patches come
+// in any order.
+inline LinearPatch make_linear_patch(double area, double a, double b, double c) {
+  using detail::max_of;
+  using detail::min_of;
+  const double a1 = min_of(a, b), b1 = max_of(b, a);
+  const double b2 = min_of(b1, c), c2 = max_of(c, b1);
+  return {area, min_of(a1, b2), max_of(b2, a1), c2};
 }
 
 // Integral of the field: area times the mean of the corners (paper eq. 8).
