@@ -1,9 +1,9 @@
 #include "sampling/lattice_triangles.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include <algorithm>
+#include <vector>
 
-#include "util/block_offsets.hpp"
+#include <tbb/parallel_for.h>
 
 namespace ncv {
 
@@ -12,31 +12,123 @@ double lattice_triangle_area(const SampleSet& samples, std::size_t t) {
   return samples.triangle_areas[t] / (steps * steps);
 }
 
-Buffer<LinearPatch> lattice_patches(const SampleSet& samples, std::span<const double> d) {
-  const std::size_t triangles = samples.lattice_sizes.size();
-  const Buffer<std::uint64_t> first = block_offsets(
-      triangles, [&](std::size_t t) { return lattice_triangle_count(samples.lattice_sizes[t]); });
-  Buffer<LinearPatch> patches(first[triangles]);
-  const Mesh& mesh = samples.mesh;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles, 1024), [&](const auto& range) {
-    for (std::size_t t = range.begin(); t != range.end(); ++t) {
-      const std::uint32_t n = samples.lattice_sizes[t];
-      if (n < 2) continue;
-      LinearPatch* out = patches.data() + first[t];
-      if (n == 2) {  // most triangles of a fine mesh: one sub-triangle, the corners' samples
-        const auto& corner = mesh.triangles[t];
-        *out = make_linear_patch(samples.triangle_areas[t], d[samples.vertex_sample[corner[0]]],
-                                 d[samples.vertex_sample[corner[1]]],
-                                 d[samples.vertex_sample[corner[2]]]);
-        continue;
+namespace {
+
+// The distances at lattice row i of triangle t (lattice size n): its n - i points in j
+// order, numbered as SampleSet::sample_at numbers them (the corners by their vertices'
+// samples, every other point the triangle's own, row after row).
+void row_distances(const SampleSet& samples, std::span<const double> d, std::size_t t,
+                   std::uint64_t n, std::uint64_t i, double* row) {
+  const auto& corner = samples.mesh.triangles[t];
+  const auto at_corner = [&](int k) { return d[samples.vertex_sample[corner[k]]]; };
+  if (i == n - 1) {
+    row[0] = at_corner(1);
+    return;
+  }
+  const std::uint64_t first = samples.first_interior_sample[t];
+  if (i == 0) {
+    row[0] = at_corner(0);
+    for (std::uint64_t j = 1; j + 1 < n; ++j) row[j] = d[first + j - 1];
+    row[n - 1] = at_corner(2);
+    return;
+  }
+  const std::span<const double> own = d.subspan(first + i * n - i * (i - 1) / 2 - 2, n - i);
+  std::copy(own.begin(), own.end(), row);
+}
+
+}  // namespace
+
+// Where each patch whose index is a multiple of kStartStride lies: its triangle and its
+// place among that triangle's patches. Two parallel passes over blocks of triangles (their
+// patch counts, then the strides each block holds), as block_offsets makes offsets.
+std::vector<LatticePatches::Start> LatticePatches::find_starts() {
+  constexpr std::size_t kBlock = std::size_t{1} << 14;
+  const std::size_t triangles = samples_.lattice_sizes.size();
+  const std::size_t blocks = (triangles + kBlock - 1) / kBlock;
+  const auto patches_of = [&](std::size_t t) {
+    return lattice_triangle_count(samples_.lattice_sizes[t]);
+  };
+  std::vector<std::uint64_t> block_first(blocks + 1, 0);
+  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+    std::uint64_t sum = 0;
+    for (std::size_t t = b * kBlock; t < std::min(triangles, (b + 1) * kBlock); ++t) {
+      sum += patches_of(t);
+    }
+    block_first[b + 1] = sum;
+  });
+  for (std::size_t b = 0; b < blocks; ++b) block_first[b + 1] += block_first[b];
+  size_ = block_first[blocks];
+  std::vector<Start> starts((size_ + kStartStride - 1) / kStartStride);
+  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+    std::uint64_t first = block_first[b];
+    for (std::size_t t = b * kBlock; t < std::min(triangles, (b + 1) * kBlock); ++t) {
+      const std::uint64_t end = first + patches_of(t);
+      for (std::uint64_t k = (first + kStartStride - 1) / kStartStride; k * kStartStride < end;
+           ++k) {
+        starts[k] = {t, k * kStartStride - first};
       }
-      const double area = lattice_triangle_area(samples, t);
-      for_each_lattice_triangle(samples, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
-        *out++ = make_linear_patch(area, d[a], d[b], d[c]);
-      });
+      first = end;
     }
   });
-  return patches;
+  return starts;
+}
+
+LatticePatches::LatticePatches(const SampleSet& samples, std::span<const double> d)
+    : samples_(samples), d_(d), starts_(find_starts()) {}
+
+std::span<const LinearPatch> LatticePatches::range(std::size_t begin, std::size_t end,
+                                                   std::span<LinearPatch> scratch) const {
+  if (begin == end) return {};
+  // The triangle holding patch `begin`, from the stride point at or before it.
+  const Start& start = starts_[begin / kStartStride];
+  std::size_t t = start.triangle;
+  std::uint64_t skip = start.skip + begin % kStartStride;
+  while (skip >= lattice_triangle_count(samples_.lattice_sizes[t])) {
+    skip -= lattice_triangle_count(samples_.lattice_sizes[t]);
+    ++t;
+  }
+  LinearPatch* out = scratch.data();
+  for (std::uint64_t at = begin; at < end; ++t, skip = 0) {
+    const std::uint32_t n = samples_.lattice_sizes[t];
+    if (n == 2) {  // most triangles of a fine mesh: one patch, the corners'
+      const auto& corner = samples_.mesh.triangles[t];
+      const auto at_corner = [&](int k) { return d_[samples_.vertex_sample[corner[k]]]; };
+      *out++ =
+          make_linear_patch(samples_.triangle_areas[t], at_corner(0), at_corner(1), at_corner(2));
+      ++at;
+    } else if (n > 2) {
+      const std::uint64_t count = std::min(lattice_triangle_count(n) - skip, end - at);
+      make_patches(t, skip, count, out);
+      out += count;
+      at += count;
+    }
+  }
+  return scratch.first(end - begin);
+}
+
+// Sub-triangles [skip, skip + count) of triangle t in for_each_lattice_triangle's order: row
+// i holds 2 (n - 1 - i) - 1 of them, upward and downward ones alternating.
+void LatticePatches::make_patches(std::size_t t, std::uint64_t skip, std::uint64_t count,
+                                  LinearPatch* out) const {
+  const std::uint64_t n = samples_.lattice_sizes[t];
+  const double area = lattice_triangle_area(samples_, t);
+  std::uint64_t i = 0;
+  for (std::uint64_t in_row = 2 * n - 3; skip >= in_row; in_row -= 2) {
+    skip -= in_row;
+    ++i;
+  }
+  std::vector<double> low(n), high(n);
+  row_distances(samples_, d_, t, n, i, low.data());
+  for (; count > 0; ++i, skip = 0) {
+    row_distances(samples_, d_, t, n, i + 1, high.data());
+    const std::uint64_t in_row = 2 * (n - 1 - i) - 1;
+    for (std::uint64_t p = skip; p < in_row && count > 0; ++p, --count) {
+      const std::uint64_t j = p / 2;
+      *out++ = p % 2 == 0 ? make_linear_patch(area, low[j], high[j], low[j + 1])
+                          : make_linear_patch(area, high[j], high[j + 1], low[j + 1]);
+    }
+    std::swap(low, high);
+  }
 }
 
 }  // namespace ncv

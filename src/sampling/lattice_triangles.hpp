@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geometry/linear_patch.hpp"
+#include "geometry/patch_source.hpp"
 #include "sampling/sampling.hpp"
 #include "util/buffer.hpp"
 
@@ -43,9 +44,35 @@ void for_each_lattice_triangle(const SampleSet& samples, std::size_t t, Visit&& 
   }
 }
 
-// Every sub-triangle of every sampled triangle as a linear patch of the distances d (one
-// per sample), triangle by triangle in mesh order. Filled in parallel, each patch written
-// once (no serial zero-fill first).
-Buffer<LinearPatch> lattice_patches(const SampleSet& samples, std::span<const double> d);
+// Every sub-triangle of every sampled triangle as a linear patch of the distances d (one per
+// sample), triangle by triangle in mesh order, made on demand a range at a time. The
+// statistics pass over them five times; stored, they were 32 bytes a patch of fresh pages
+// (77 MB for the paper-scale finishing part, 92 MB for the uncut slot), which this machine's
+// kernel clears at first touch: slower than making them again (docs/PERFORMANCE.md).
+class LatticePatches final : public PatchSource {
+ public:
+  LatticePatches(const SampleSet& samples, std::span<const double> d);
+
+  std::size_t size() const override { return size_; }
+  std::span<const LinearPatch> range(std::size_t begin, std::size_t end,
+                                     std::span<LinearPatch> scratch) const override;
+
+ private:
+  // Patch k * kStartStride lies in `triangle`, the skip-th of its patches. Every range of
+  // the statistics' passes starts at such a patch.
+  static constexpr std::uint64_t kStartStride = std::uint64_t{1} << 13;
+  struct Start {
+    std::size_t triangle;
+    std::uint64_t skip;
+  };
+
+  std::vector<Start> find_starts();  // sets size_
+  void make_patches(std::size_t t, std::uint64_t skip, std::uint64_t count, LinearPatch* out) const;
+
+  const SampleSet& samples_;
+  std::span<const double> d_;
+  std::uint64_t size_ = 0;
+  std::vector<Start> starts_;
+};
 
 }  // namespace ncv

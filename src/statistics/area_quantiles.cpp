@@ -8,14 +8,13 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
+#include "statistics/patch_passes.hpp"
 #include "statistics/rank_selection.hpp"
-#include "util/ordered_reduce.hpp"
 
 namespace ncv {
 
 namespace {
 
-constexpr std::size_t kPatchBlock = 1 << 16;
 // Split points per refinement step: each step leaves at most 1/kSplits of the corner
 // values inside the bracket, so a few steps reach a bracket free of them.
 constexpr std::size_t kSplits = 32;
@@ -55,42 +54,43 @@ void add_areas_inside(const LinearPatch& p, const double* splits, std::size_t be
   if (j < end) sums[j] += area_strictly_inside(p, splits[j]);
 }
 
-// Distribution function at each split point (ascending): patches wholly at or below a
-// split add their whole area from there on, patches straddling it their closed form.
-std::vector<double> area_at_most_each(std::span<const LinearPatch> patches,
-                                      const std::vector<double>& splits) {
+// One block's share of the distribution function at each split point (ascending): [0, m)
+// the patches straddling a split, [m, 2m] the whole areas of those wholly at or below one,
+// by the first split at or above them.
+using SplitSums = std::vector<double>;
+
+SplitSums split_sums(std::span<const LinearPatch> patches, const std::vector<double>& splits) {
   const std::size_t m = splits.size();
-  using Sums = std::vector<double>;  // [0, m): partial areas, [m, 2m]: whole-area steps
-  Sums sums = ordered_reduce(
-      patches.size(), kPatchBlock, Sums(2 * m + 1, 0.0),
-      [&](std::size_t begin, std::size_t end) {
-        Sums part(2 * m + 1, 0.0);
-        // Neighbouring patches mostly lie between the same two splits, (low, high]: then
-        // both searches would give `last` and the patch adds its whole area there.
-        std::size_t last = 0;
-        double low = -std::numeric_limits<double>::infinity(), high = low;
-        for (std::size_t i = begin; i < end; ++i) {
-          const LinearPatch& p = patches[i];
-          if (low < p.lo && p.hi <= high) {
-            part[m + last] += p.area;
-            continue;
-          }
-          // The splits in [lo, hi), walked rather than searched: a patch spans few (all of
-          // them only where the splits crowd into rounding noise).
-          const std::size_t first = lower_bound_index(splits, p.lo);
-          std::size_t whole = first;
-          while (whole < m && splits[whole] < p.hi) ++whole;
-          add_areas_inside(p, splits.data(), first, whole, part.data());
-          part[m + whole] += p.area;
-          last = whole;
-          low = whole > 0 ? splits[whole - 1] : -std::numeric_limits<double>::infinity();
-          high = whole < m ? splits[whole] : std::numeric_limits<double>::infinity();
-        }
-        return part;
-      },
-      [](Sums& acc, const Sums& part) {
-        for (std::size_t k = 0; k < acc.size(); ++k) acc[k] += part[k];
-      });
+  SplitSums part(2 * m + 1, 0.0);
+  // Neighbouring patches mostly lie between the same two splits, (low, high]: then both
+  // searches would give `last` and the patch adds its whole area there.
+  std::size_t last = 0;
+  double low = -std::numeric_limits<double>::infinity(), high = low;
+  for (const LinearPatch& p : patches) {
+    if (low < p.lo && p.hi <= high) {
+      part[m + last] += p.area;
+      continue;
+    }
+    // The splits in [lo, hi), walked rather than searched: a patch spans few (all of them
+    // only where the splits crowd into rounding noise).
+    const std::size_t first = lower_bound_index(splits, p.lo);
+    std::size_t whole = first;
+    while (whole < m && splits[whole] < p.hi) ++whole;
+    add_areas_inside(p, splits.data(), first, whole, part.data());
+    part[m + whole] += p.area;
+    last = whole;
+    low = whole > 0 ? splits[whole - 1] : -std::numeric_limits<double>::infinity();
+    high = whole < m ? splits[whole] : std::numeric_limits<double>::infinity();
+  }
+  return part;
+}
+
+void add_split_sums(SplitSums& acc, const SplitSums& part) {
+  for (std::size_t k = 0; k < acc.size(); ++k) acc[k] += part[k];
+}
+
+// The distribution function at each of the m split points, from the blocks' sums combined.
+std::vector<double> at_most_from(const SplitSums& sums, std::size_t m) {
   std::vector<double> at_most(m);
   double whole = 0;
   for (std::size_t j = 0; j < m; ++j) {
@@ -98,6 +98,17 @@ std::vector<double> area_at_most_each(std::span<const LinearPatch> patches,
     at_most[j] = whole + sums[j];
   }
   return at_most;
+}
+
+// Distribution function at each split point (ascending): patches wholly at or below a
+// split add their whole area from there on, patches straddling it their closed form.
+std::vector<double> area_at_most_each(const PatchSource& patches,
+                                      const std::vector<double>& splits) {
+  const SplitSums sums = reduce_patch_blocks(
+      patches, SplitSums(2 * splits.size() + 1, 0.0),
+      [&](std::span<const LinearPatch> block) { return split_sums(block, splits); },
+      add_split_sums);
+  return at_most_from(sums, splits.size());
 }
 
 // Up to kSplits distinct values spread evenly (by rank) over sorted[begin, end).
@@ -180,16 +191,18 @@ void narrow(Bracket& bracket, std::span<const LinearPatch> patches, double a, do
   for (const LinearPatch& p : patches) add_to_bracket(bracket, p);
 }
 
-// The first narrowing of up to N fresh brackets in one pass over all patches: what narrow()
-// does for each, in the same patch order, so every sum is narrow()'s to the bit. Most patches
-// lie wholly below or above a bracket; the bases, kept in registers, take the area of those
-// below without a branch (adding +0.0 leaves a sum of areas as it is).
+// The first narrowing of up to N fresh brackets, continued over the next range of patches:
+// what narrow() does for each, in the same patch order, so every sum is narrow()'s to the
+// bit. Most patches lie wholly below or above a bracket; the bases, kept in registers over
+// the range, take the area of those below without a branch (adding +0.0 leaves a sum of
+// areas as it is).
 template <std::size_t N>
 void narrow_together(std::span<Bracket> brackets, std::span<const LinearPatch> patches) {
   std::array<double, N> a{}, b{}, base{};
   for (std::size_t k = 0; k < N; ++k) {
     a[k] = brackets[k].a;
     b[k] = brackets[k].b;
+    base[k] = brackets[k].base;
   }
   for (const LinearPatch& p : patches) {
     for (std::size_t k = 0; k < N; ++k) {
@@ -210,11 +223,16 @@ void narrow_fresh(std::span<Bracket> brackets, std::span<const LinearPatch> patc
 }
 
 // Every fresh bracket narrowed over all patches: in two halves side by side, each half's
-// brackets sharing their passes over the patches.
-void narrow_all(std::span<Bracket> brackets, std::span<const LinearPatch> patches) {
+// brackets sharing their passes over the patches, range after range.
+void narrow_all(std::span<Bracket> brackets, const PatchSource& patches) {
   const std::size_t half = (brackets.size() + 1) / 2;
-  tbb::parallel_invoke([&] { narrow_fresh(brackets.first(half), patches); },
-                       [&] { narrow_fresh(brackets.subspan(half), patches); });
+  const auto narrow_over_all = [&](std::span<Bracket> some) {
+    if (some.empty()) return;  // one bracket: no second pass to make the patches for
+    for_each_patch_range(patches,
+                         [&](std::span<const LinearPatch> range) { narrow_fresh(some, range); });
+  };
+  tbb::parallel_invoke([&] { narrow_over_all(brackets.first(half)); },
+                       [&] { narrow_over_all(brackets.subspan(half)); });
 }
 
 // With no corner value inside (a, b), F is base + spanning there: bisect it.
@@ -238,7 +256,7 @@ double quantile_in(Bracket bracket, std::span<const double> sorted, double targe
     const std::vector<double> splits =
         rank_splits(sorted, static_cast<std::size_t>(begin - sorted.begin()),
                     static_cast<std::size_t>(end - sorted.begin()));
-    const std::vector<double> at_most = area_at_most_each(bracket.partial, splits);
+    const std::vector<double> at_most = area_at_most_each(StoredPatches(bracket.partial), splits);
     std::size_t j = 0;
     while (j < splits.size() &&
            bracket.base + bracket.spanning(splits[j] - bracket.a) + at_most[j] < target) {
@@ -280,16 +298,31 @@ std::vector<double> values_inside(std::span<const double> values, double a, doub
 
 }  // namespace
 
-std::vector<double> area_quantiles(std::span<const LinearPatch> patches,
-                                   std::span<const double> values,
-                                   std::span<const double> fractions) {
+// The splits come out plus +0.0 (-0.0 as +0.0): equal values are then equal bit patterns,
+// and no result can come out as a negative zero.
+AreaQuantiles::AreaQuantiles(std::span<const double> values)
+    : values_(values), splits_(values.empty() ? std::vector<double>{} : first_splits(values)) {}
+
+std::vector<double> AreaQuantiles::zero() const {
+  return SplitSums(2 * splits_.size() + 1, 0.0);
+}
+
+std::vector<double> AreaQuantiles::block(std::span<const LinearPatch> patches) const {
+  return split_sums(patches, splits_);
+}
+
+void AreaQuantiles::combine(std::vector<double>& acc, const std::vector<double>& part) {
+  add_split_sums(acc, part);
+}
+
+std::vector<double> AreaQuantiles::quantiles(const PatchSource& patches,
+                                             std::span<const double> fractions,
+                                             const std::vector<double>& sums) const {
   std::vector<double> result(fractions.size(), std::numeric_limits<double>::quiet_NaN());
-  if (values.empty()) return result;
-  // The splits come out plus +0.0 (-0.0 as +0.0): equal values are then equal bit patterns,
-  // and no result can come out as a negative zero.
-  const std::vector<double> split_values = first_splits(values);
-  // The first step runs over all patches once, shared by every fraction.
-  const std::vector<double> at_most = area_at_most_each(patches, split_values);
+  if (values_.empty()) return result;
+  const std::vector<double>& split_values = splits_;
+  // The first step ran over all patches once, shared by every fraction.
+  const std::vector<double> at_most = at_most_from(sums, split_values.size());
   const double total = at_most.back();
   if (!(total > 0)) return result;
   // Each fraction's first bracket: (splits[j - 1], splits[j]), j = 0 when the fraction lies
@@ -319,12 +352,23 @@ std::vector<double> area_quantiles(std::span<const LinearPatch> patches,
       return;
     }
     const double target = std::clamp(fractions[f], 0.0, 1.0) * total;
-    const std::vector<double> inside = values_inside(values, split_values[j - 1], split_values[j]);
+    const std::vector<double> inside = values_inside(values_, split_values[j - 1], split_values[j]);
     const auto k = static_cast<std::size_t>(std::lower_bound(opened.begin(), opened.end(), j) -
                                             opened.begin());
     result[f] = quantile_in(brackets[k], inside, target);
   });
   return result;
+}
+
+std::vector<double> area_quantiles(const PatchSource& patches, std::span<const double> values,
+                                   std::span<const double> fractions) {
+  const AreaQuantiles search(values);
+  return search.quantiles(
+      patches, fractions,
+      reduce_patch_blocks(
+          patches, search.zero(),
+          [&](std::span<const LinearPatch> block) { return search.block(block); },
+          AreaQuantiles::combine));
 }
 
 }  // namespace ncv

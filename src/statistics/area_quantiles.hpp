@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-#include "geometry/linear_patch.hpp"
+#include "geometry/patch_source.hpp"
 
 namespace ncv {
 
@@ -14,8 +14,26 @@ namespace ncv {
 // (duplicates allowed): the distribution function is quadratic between consecutive corner
 // values, which is what makes the search finish in closed form.
 // The result is NaN for every fraction when the patches have no area.
-std::vector<double> area_quantiles(std::span<const LinearPatch> patches,
-                                   std::span<const double> values,
+std::vector<double> area_quantiles(const PatchSource& patches, std::span<const double> values,
                                    std::span<const double> fractions);
+
+// area_quantiles in pieces, for a pass over the patches shared with other measures: the first
+// step's split points come from the values alone, its sums over each block of patches (in
+// the blocks of statistics/patch_passes.hpp, kPatchBlock patches) combined in block order
+// are area_quantiles' own to the bit, and the search goes on from them with further passes
+// over `patches`.
+class AreaQuantiles {
+ public:
+  explicit AreaQuantiles(std::span<const double> values);  // kept by reference
+  std::vector<double> zero() const;
+  std::vector<double> block(std::span<const LinearPatch> patches) const;
+  static void combine(std::vector<double>& acc, const std::vector<double>& part);
+  std::vector<double> quantiles(const PatchSource& patches, std::span<const double> fractions,
+                                const std::vector<double>& sums) const;
+
+ private:
+  std::span<const double> values_;
+  std::vector<double> splits_;
+};
 
 }  // namespace ncv

@@ -7,6 +7,7 @@
 
 #include "sampling/lattice_triangles.hpp"
 #include "statistics/area_quantiles.hpp"
+#include "statistics/patch_passes.hpp"
 #include "util/error.hpp"
 #include "util/ordered_reduce.hpp"
 
@@ -14,7 +15,8 @@ namespace ncv {
 
 namespace {
 
-constexpr std::size_t kPatchBlock = 1 << 16;
+// Blocks of triangles for their counts and area sum.
+constexpr std::size_t kCountBlock = std::size_t{1} << 16;
 
 void check_distances(const SampleSet& samples, std::span<const double> d) {
   if (d.size() != samples.sample_count()) {
@@ -39,7 +41,7 @@ void count_triangles(const SampleSet& samples, ErrorStatistics& stats) {
   const std::span<const double> areas = samples.triangle_areas;
   const Mesh& mesh = samples.mesh;
   const TriangleCounts counts = ordered_reduce(
-      mesh.triangle_count(), kPatchBlock, TriangleCounts{},
+      mesh.triangle_count(), kCountBlock, TriangleCounts{},
       [&](std::size_t begin, std::size_t end) {
         TriangleCounts part;
         for (std::size_t t = begin; t < end; ++t) {
@@ -103,12 +105,10 @@ void add_moments(Moments& acc, const Moments& part) {
   acc.square += part.square;
 }
 
-Moments integrate(std::span<const LinearPatch> patches, double shift) {
-  return ordered_reduce(
-      patches.size(), kPatchBlock, Moments{},
-      [&](std::size_t begin, std::size_t end) {
-        return integrate_block(patches.subspan(begin, end - begin), shift);
-      },
+Moments integrate(const PatchSource& patches, double shift) {
+  return reduce_patch_blocks(
+      patches, Moments{},
+      [&](std::span<const LinearPatch> block) { return integrate_block(block, shift); },
       add_moments);
 }
 
@@ -117,8 +117,7 @@ Moments integrate(std::span<const LinearPatch> patches, double shift) {
 // with nothing (that is the paper's comparison of the schemes). RMS and spread describe
 // the sampled surface. The variance integrates (d - m)^2 in a second pass rather than
 // taking E[d^2] - m^2, which cancels catastrophically when the mean dwarfs the spread.
-void compute_moments(std::span<const LinearPatch> patches, const Moments& raw,
-                     ErrorStatistics& stats) {
+void compute_moments(const PatchSource& patches, const Moments& raw, ErrorStatistics& stats) {
   stats.sampled_area = raw.area;
   if (!(raw.area > 0)) return;
   stats.mean = raw.sum / (stats.workpiece_area > 0 ? stats.workpiece_area : raw.area);
@@ -145,25 +144,27 @@ void add_tolerance_areas(ToleranceAreas& acc, const ToleranceAreas& part) {
   acc.within += part.within;
 }
 
-// The first pass over the patches: the raw moments, the tolerance areas and the histogram,
-// block by block, each block's three sums made while its patches are in cache and combined
-// in block order per measure, so each is what its own pass gave, to the bit.
+// The first pass over the patches: the raw moments, the tolerance areas, the histogram and
+// the percentiles' first step, block by block, each block's sums made while its patches are
+// in cache and combined in block order per measure, so each is what its own pass gave, to
+// the bit.
 struct FirstPass {
   Moments raw;
   std::optional<ToleranceAreas> tolerance;
   std::vector<double> histogram;
+  std::vector<double> quantiles;
 };
 
-FirstPass first_pass(std::span<const LinearPatch> patches, const std::optional<Tolerance>& zone,
-                     const HistogramSums& histogram) {
+FirstPass first_pass(const PatchSource& patches, const std::optional<Tolerance>& zone,
+                     const HistogramSums& histogram, const AreaQuantiles& quantiles) {
   static_assert(kHistogramBlock == kPatchBlock);
-  FirstPass zero{{}, std::nullopt, histogram.zero()};
+  FirstPass zero{{}, std::nullopt, histogram.zero(), quantiles.zero()};
   if (zone) zero.tolerance = ToleranceAreas{*zone};
-  return ordered_reduce(
-      patches.size(), kPatchBlock, zero,
-      [&](std::size_t begin, std::size_t end) {
-        const std::span<const LinearPatch> block = patches.subspan(begin, end - begin);
-        FirstPass part{integrate_block(block, 0), std::nullopt, histogram.block(block)};
+  return reduce_patch_blocks(
+      patches, zero,
+      [&](std::span<const LinearPatch> block) {
+        FirstPass part{integrate_block(block, 0), std::nullopt, histogram.block(block),
+                       quantiles.block(block)};
         if (zone) part.tolerance = clip_block(block, *zone);
         return part;
       },
@@ -171,14 +172,16 @@ FirstPass first_pass(std::span<const LinearPatch> patches, const std::optional<T
         add_moments(acc.raw, part.raw);
         if (acc.tolerance) add_tolerance_areas(*acc.tolerance, *part.tolerance);
         HistogramSums::combine(acc.histogram, part.histogram);
+        AreaQuantiles::combine(acc.quantiles, part.quantiles);
       });
 }
 
-std::vector<Percentile> compute_percentiles(std::span<const LinearPatch> patches,
-                                            std::span<const double> d) {
+std::vector<Percentile> compute_percentiles(const PatchSource& patches,
+                                            const AreaQuantiles& quantiles,
+                                            const std::vector<double>& sums) {
   std::vector<double> fractions;
   for (double percent : kReportedPercentiles) fractions.push_back(percent / 100);
-  const std::vector<double> values = area_quantiles(patches, d, fractions);
+  const std::vector<double> values = quantiles.quantiles(patches, fractions, sums);
   std::vector<Percentile> percentiles;
   for (std::size_t k = 0; k < values.size(); ++k) {
     percentiles.push_back({kReportedPercentiles[k], values[k]});
@@ -194,17 +197,18 @@ ErrorStatistics compute_error_statistics(const SampleSet& samples, std::span<con
   check_distances(samples, d);
   ErrorStatistics stats;
   stats.samples = d.size();
-  const Buffer<LinearPatch> patches = lattice_patches(samples, d);
+  const LatticePatches patches(samples, d);
   count_triangles(samples, stats);
   find_extremes(samples, d, stats);
 
   const HistogramSums histogram_sums(
       histogram.range.value_or(ValueRange{stats.min.value, stats.max.value}), histogram.bins);
-  const FirstPass first = first_pass(patches, tolerance, histogram_sums);
+  const AreaQuantiles quantiles(d);
+  const FirstPass first = first_pass(patches, tolerance, histogram_sums, quantiles);
   compute_moments(patches, first.raw, stats);
   if (tolerance) stats.tolerance = *first.tolerance;
   stats.histogram = histogram_sums.histogram(first.histogram);
-  stats.percentiles = compute_percentiles(patches, d);
+  stats.percentiles = compute_percentiles(patches, quantiles, first.quantiles);
   return stats;
 }
 

@@ -65,6 +65,12 @@ class FreedBlocks {
     return block.start;
   }
 
+  void release() noexcept {
+    std::lock_guard lock(mutex_);
+    for (const Block& block : blocks_) munmap(block.start, block.bytes);
+    blocks_.clear();
+  }
+
   void keep(void* start, std::size_t bytes) noexcept {
     std::lock_guard lock(mutex_);
     try {
@@ -135,3 +141,13 @@ void free_huge(void* p, std::size_t) noexcept {
 #endif
 
 }  // namespace ncv::detail
+
+namespace ncv {
+
+void release_kept_buffers() noexcept {
+#if NCV_KEEP_FREED_BUFFERS
+  detail::freed_blocks().release();
+#endif
+}
+
+}  // namespace ncv

@@ -71,4 +71,9 @@ class UninitializedAllocator : public std::allocator<T> {
 template <class T>
 using Buffer = std::vector<T, UninitializedAllocator<T>>;
 
+// Unmaps the freed buffers kept so far. A buffer asking for fresh pages does so itself; this
+// is for a program whose large buffers are all made, so that the kept ones do not stay
+// resident under the smaller allocations that follow (run's reports and pictures).
+void release_kept_buffers() noexcept;
+
 }  // namespace ncv

@@ -135,7 +135,8 @@ double reference_quantile(const Field& field, double q) {
 TEST_CASE("area quantiles are the reference implementation's to the bit", "[stats][quantiles]") {
   for (const Golden& golden : kGolden) {
     const Field field = random_field(golden.seed, golden.count);
-    const std::vector<double> q = ncv::area_quantiles(field.patches, field.values, kFractions);
+    const std::vector<double> q =
+        ncv::area_quantiles(ncv::StoredPatches(field.patches), field.values, kFractions);
     for (std::size_t k = 0; k < kFractions.size(); ++k) {
       INFO("seed " << golden.seed << ", " << golden.count << " patches, fraction "
                    << kFractions[k]);
@@ -148,7 +149,7 @@ TEST_CASE("area quantiles do not depend on the thread count", "[stats][quantiles
   const Field field = random_field(7, 300000);
   const auto run = [&](int threads) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    return ncv::area_quantiles(field.patches, field.values, kFractions);
+    return ncv::area_quantiles(ncv::StoredPatches(field.patches), field.values, kFractions);
   };
   const std::vector<double> one = run(1), two = run(2), three = run(3);
   for (std::size_t k = 0; k < kFractions.size(); ++k) {
@@ -163,7 +164,8 @@ TEST_CASE("area quantiles do not depend on the thread count", "[stats][quantiles
 TEST_CASE("area quantiles match a sort-based reference", "[stats][quantiles]") {
   for (const std::uint64_t seed : {11, 12, 13}) {
     const Field field = random_field(seed, 3000);
-    const std::vector<double> q = ncv::area_quantiles(field.patches, field.values, kFractions);
+    const std::vector<double> q =
+        ncv::area_quantiles(ncv::StoredPatches(field.patches), field.values, kFractions);
     const double total =
         distribution(field.patches, *std::max_element(field.values.begin(), field.values.end()));
     const double tolerance = 1e-9 * total;

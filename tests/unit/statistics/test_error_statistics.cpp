@@ -131,6 +131,14 @@ ncv::Mesh uneven_surface() {
 
 // Each reported percentile p has the fraction p / 100 of the area at or below it (and below
 // it: the field has no atoms), summed patch by patch with the closed forms.
+// Every lattice patch of the distances d, made at once.
+std::vector<ncv::LinearPatch> all_patches(const SampleSet& samples, std::span<const double> d) {
+  const ncv::LatticePatches source(samples, d);
+  std::vector<ncv::LinearPatch> patches(source.size());
+  (void)source.range(0, patches.size(), patches);
+  return patches;
+}
+
 void check_percentiles_invert(const ErrorStatistics& stats,
                               std::span<const ncv::LinearPatch> patches) {
   for (const ncv::Percentile& p : stats.percentiles) {
@@ -351,7 +359,7 @@ TEST_CASE("percentiles invert the exact area distribution", "[stats]") {
   std::vector<double> d(samples.sample_count());
   for (double& v : d) v = noise(random);
   const ErrorStatistics stats = compute_error_statistics(samples, d, std::nullopt);
-  const ncv::Buffer<ncv::LinearPatch> patches = ncv::lattice_patches(samples, d);
+  const std::vector<ncv::LinearPatch> patches = all_patches(samples, d);
   check_percentiles_invert(stats, patches);
 }
 
@@ -362,7 +370,7 @@ TEST_CASE("quantiles of atoms and ramps", "[stats]") {
                                                  ncv::make_linear_patch(1, 1, 3, 3)};
   const std::vector<double> values = {3, 0, 1, 0, 3, 0};  // the corner values, any order
   const std::vector<double> fractions = {0, 0.25, 0.5, 0.5 + 1e-12, 0.75, 1};
-  const std::vector<double> q = ncv::area_quantiles(patches, values, fractions);
+  const std::vector<double> q = ncv::area_quantiles(ncv::StoredPatches(patches), values, fractions);
   CHECK(q[0] == 0);
   CHECK(q[1] == 0);
   CHECK(q[2] == 0);
@@ -372,7 +380,8 @@ TEST_CASE("quantiles of atoms and ramps", "[stats]") {
   CHECK(q[4] == Approx(1 + std::sqrt(2.0)).epsilon(1e-14));
   CHECK(q[5] == 3);
   const std::vector<ncv::LinearPatch> no_area = {ncv::make_linear_patch(0, 0, 1, 2)};
-  CHECK(std::isnan(ncv::area_quantiles(no_area, std::vector<double>{0, 1, 2}, fractions)[2]));
+  CHECK(std::isnan(ncv::area_quantiles(ncv::StoredPatches(no_area), std::vector<double>{0, 1, 2},
+                                       fractions)[2]));
 }
 
 TEST_CASE("the verdict passes exactly up to the tolerance limits", "[stats]") {
@@ -460,7 +469,7 @@ TEST_CASE("percentiles of a field of many patch blocks invert the exact distribu
   std::uniform_real_distribution<double> noise(-1e-3, 1e-3);
   std::vector<double> d = distances_of(samples, [](Vec3 p) { return std::sin(9 * p[0]) * p[1]; });
   for (double& v : d) v += noise(random);
-  const ncv::Buffer<ncv::LinearPatch> patches = ncv::lattice_patches(samples, d);
+  const std::vector<ncv::LinearPatch> patches = all_patches(samples, d);
   REQUIRE(patches.size() > 3 * 65536);
   const ErrorStatistics stats = compute_error_statistics(samples, d, std::nullopt);
   check_percentiles_invert(stats, patches);
