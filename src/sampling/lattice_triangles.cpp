@@ -88,6 +88,7 @@ std::span<const LinearPatch> LatticePatches::range(std::size_t begin, std::size_
     ++t;
   }
   LinearPatch* out = scratch.data();
+  std::vector<double> rows;  // two lattice rows, for make_patches
   for (std::uint64_t at = begin; at < end; ++t, skip = 0) {
     const std::uint32_t n = samples_.lattice_sizes[t];
     if (n == 2) {  // most triangles of a fine mesh: one patch, the corners'
@@ -98,7 +99,7 @@ std::span<const LinearPatch> LatticePatches::range(std::size_t begin, std::size_
       ++at;
     } else if (n > 2) {
       const std::uint64_t count = std::min(lattice_triangle_count(n) - skip, end - at);
-      make_patches(t, skip, count, out);
+      make_patches(t, skip, count, out, rows);
       out += count;
       at += count;
     }
@@ -109,7 +110,7 @@ std::span<const LinearPatch> LatticePatches::range(std::size_t begin, std::size_
 // Sub-triangles [skip, skip + count) of triangle t in for_each_lattice_triangle's order: row
 // i holds 2 (n - 1 - i) - 1 of them, upward and downward ones alternating.
 void LatticePatches::make_patches(std::size_t t, std::uint64_t skip, std::uint64_t count,
-                                  LinearPatch* out) const {
+                                  LinearPatch* out, std::vector<double>& rows) const {
   const std::uint64_t n = samples_.lattice_sizes[t];
   const double area = lattice_triangle_area(samples_, t);
   std::uint64_t i = 0;
@@ -117,10 +118,12 @@ void LatticePatches::make_patches(std::size_t t, std::uint64_t skip, std::uint64
     skip -= in_row;
     ++i;
   }
-  std::vector<double> low(n), high(n);
-  row_distances(samples_, d_, t, n, i, low.data());
+  if (rows.size() < 2 * n) rows.resize(2 * n);
+  double* low = rows.data();
+  double* high = low + n;
+  row_distances(samples_, d_, t, n, i, low);
   for (; count > 0; ++i, skip = 0) {
-    row_distances(samples_, d_, t, n, i + 1, high.data());
+    row_distances(samples_, d_, t, n, i + 1, high);
     const std::uint64_t in_row = 2 * (n - 1 - i) - 1;
     for (std::uint64_t p = skip; p < in_row && count > 0; ++p, --count) {
       const std::uint64_t j = p / 2;

@@ -67,7 +67,8 @@ class LatticePatches final : public PatchSource {
   };
 
   std::vector<Start> find_starts();  // sets size_
-  void make_patches(std::size_t t, std::uint64_t skip, std::uint64_t count, LinearPatch* out) const;
+  void make_patches(std::size_t t, std::uint64_t skip, std::uint64_t count, LinearPatch* out,
+                    std::vector<double>& rows) const;
 
   const SampleSet& samples_;
   std::span<const double> d_;

@@ -4,8 +4,10 @@
 // block to the next, so a pass touches no fresh memory.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <span>
+#include <utility>
 
 #include "geometry/patch_source.hpp"
 #include "util/ordered_reduce.hpp"
