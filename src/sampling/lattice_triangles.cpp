@@ -15,25 +15,23 @@ double lattice_triangle_area(const SampleSet& samples, std::size_t t) {
 namespace {
 
 // The distances at lattice row i of triangle t (lattice size n): its n - i points in j
-// order, numbered as SampleSet::sample_at numbers them (the corners by their vertices'
-// samples, every other point the triangle's own, row after row).
+// order. A row's points other than the triangle's corners are its own samples, numbered
+// consecutively (sampling.hpp), so each row is a corner or two and one run of the array.
 void row_distances(const SampleSet& samples, std::span<const double> d, std::size_t t,
-                   std::uint64_t n, std::uint64_t i, double* row) {
-  const auto& corner = samples.mesh.triangles[t];
-  const auto at_corner = [&](int k) { return d[samples.vertex_sample[corner[k]]]; };
-  if (i == n - 1) {
-    row[0] = at_corner(1);
-    return;
-  }
-  const std::uint64_t first = samples.first_interior_sample[t];
+                   std::uint32_t n, std::uint32_t i, double* row) {
+  const auto run = [&](std::uint32_t j, std::uint32_t count) {
+    const std::span<const double> own = d.subspan(samples.sample_at(t, i, j), count);
+    std::copy(own.begin(), own.end(), row + j);
+  };
   if (i == 0) {
-    row[0] = at_corner(0);
-    for (std::uint64_t j = 1; j + 1 < n; ++j) row[j] = d[first + j - 1];
-    row[n - 1] = at_corner(2);
-    return;
+    row[0] = d[samples.sample_at(t, 0, 0)];
+    run(1, n - 2);
+    row[n - 1] = d[samples.sample_at(t, 0, n - 1)];
+  } else if (i == n - 1) {
+    row[0] = d[samples.sample_at(t, i, 0)];
+  } else {
+    run(0, n - i);
   }
-  const std::span<const double> own = d.subspan(first + i * n - i * (i - 1) / 2 - 2, n - i);
-  std::copy(own.begin(), own.end(), row);
 }
 
 }  // namespace
@@ -111,20 +109,20 @@ std::span<const LinearPatch> LatticePatches::range(std::size_t begin, std::size_
 // i holds 2 (n - 1 - i) - 1 of them, upward and downward ones alternating.
 void LatticePatches::make_patches(std::size_t t, std::uint64_t skip, std::uint64_t count,
                                   LinearPatch* out, std::vector<double>& rows) const {
-  const std::uint64_t n = samples_.lattice_sizes[t];
+  const std::uint32_t n = samples_.lattice_sizes[t];
   const double area = lattice_triangle_area(samples_, t);
-  std::uint64_t i = 0;
-  for (std::uint64_t in_row = 2 * n - 3; skip >= in_row; in_row -= 2) {
+  std::uint32_t i = 0;
+  for (std::uint64_t in_row = 2 * std::uint64_t{n} - 3; skip >= in_row; in_row -= 2) {
     skip -= in_row;
     ++i;
   }
-  if (rows.size() < 2 * n) rows.resize(2 * n);
+  if (rows.size() < 2 * std::size_t{n}) rows.resize(2 * std::size_t{n});
   double* low = rows.data();
   double* high = low + n;
   row_distances(samples_, d_, t, n, i, low);
   for (; count > 0; ++i, skip = 0) {
     row_distances(samples_, d_, t, n, i + 1, high);
-    const std::uint64_t in_row = 2 * (n - 1 - i) - 1;
+    const std::uint64_t in_row = 2 * std::uint64_t{n - 1 - i} - 1;
     for (std::uint64_t p = skip; p < in_row && count > 0; ++p, --count) {
       const std::uint64_t j = p / 2;
       *out++ = p % 2 == 0 ? make_linear_patch(area, low[j], high[j], low[j + 1])
