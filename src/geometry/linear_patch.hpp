@@ -17,41 +17,31 @@ struct LinearPatch {
   double lo = 0, mid = 0, hi = 0;  // the three corner values, ascending
 };
 
-namespace detail {
+// One compare-and-swap step: the pair `if (x > y) swap(x, y)` leaves, signed zeros
+// included, i.e. {std::min(x, y), std::max(y, x)}. SSE2's minsd(y, x) is y < x ? y : x and
+// maxsd(x, y) is x > y ? x : y, the same choices; GCC had compiled std::min and std::max here
+// to a compare and branch each where the patches are made a range at a time
+// (sampling/lattice_triangles.cpp), and those branches mispredicted about once a patch.
+struct OrderedPair {
+  double lo, hi;
+};
 
-// std::min(x, y) and std::max(x, y) to the bit, signed zeros included, as SSE2's minsd and
-// maxsd: GCC compiled std::min and std::max in make_linear_patch to a compare and branch each
-// where the patches are made a range at a time (sampling/lattice_triangles.cpp), and those
-// branches mispredicted about once a patch. minsd(y, x) is y < x ? y : x and maxsd(y, x)
-// is y > x ? y : x, x on equality: std::min's and std::max's choices.
-inline double min_of(double x, double y) {
+inline OrderedPair compare_swap(double x, double y) {
 #if defined(__SSE2__)
-  return _mm_cvtsd_f64(_mm_min_sd(_mm_set_sd(y), _mm_set_sd(x)));
+  const __m128d vx = _mm_set_sd(x), vy = _mm_set_sd(y);
+  return {_mm_cvtsd_f64(_mm_min_sd(vy, vx)), _mm_cvtsd_f64(_mm_max_sd(vx, vy))};
 #else
-  return std::min(x, y);
+  return {std::min(x, y), std::max(y, x)};
 #endif
 }
 
-inline double max_of(double x, double y) {
-#if defined(__SSE2__)
-  return _mm_cvtsd_f64(_mm_max_sd(_mm_set_sd(y), _mm_set_sd(x)));
-#else
-  return std::max(x, y);
-#endif
-}
-
-}  // namespace detail
-
-// The three compare-and-swap steps (a, b), (b, c), (a, b) of a sorting network, each as
-// std::min and std::max give them, which pick exactly what `if (x > y) swap(x, y)` leaves
-// (signed zeros included) without a branch: the corner values of neighbouring patches come
-// in any order.
+// The three compare-and-swap steps (a, b), (b, c), (a, b) of a sorting network, without a
+// branch: the corner values of neighbouring patches come in any order.
 inline LinearPatch make_linear_patch(double area, double a, double b, double c) {
-  using detail::max_of;
-  using detail::min_of;
-  const double a1 = min_of(a, b), b1 = max_of(b, a);
-  const double b2 = min_of(b1, c), c2 = max_of(c, b1);
-  return {area, min_of(a1, b2), max_of(b2, a1), c2};
+  const auto [a1, b1] = compare_swap(a, b);
+  const auto [b2, c2] = compare_swap(b1, c);
+  const auto [lo, mid] = compare_swap(a1, b2);
+  return {area, lo, mid, c2};
 }
 
 // Integral of the field: area times the mean of the corners (paper eq. 8).
