@@ -71,11 +71,10 @@ SplitSums split_sums(std::span<const LinearPatch> patches, const std::vector<dou
       part[m + last] += p.area;
       continue;
     }
-    // The splits in [lo, hi), walked rather than searched: a patch spans few (all of them
-    // only where the splits crowd into rounding noise).
+    // The splits in [lo, hi): both ends searched without a branch (a walk from the first
+    // mispredicted its exit about once a patch).
     const std::size_t first = lower_bound_index(splits, p.lo);
-    std::size_t whole = first;
-    while (whole < m && splits[whole] < p.hi) ++whole;
+    const std::size_t whole = lower_bound_index(splits, p.hi);
     add_areas_inside(p, splits.data(), first, whole, part.data());
     part[m + whole] += p.area;
     last = whole;
