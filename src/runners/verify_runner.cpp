@@ -156,6 +156,9 @@ Measurements measure_part(Mesh workpiece, const std::string& workpiece_source, M
   return measured;
 }
 
+// What the kept freed buffers may still hold once the measuring is done.
+constexpr std::size_t kPictureBuffers = std::size_t{64} << 20;
+
 ColorizeOptions colorize_options(const VerifyOptions& options) {
   ColorizeOptions colorize = options.colorize;
   colorize.tolerance = options.report.tolerance;
@@ -206,9 +209,11 @@ int run_verification(const RunJob& job) {
                    options, logging_and_writing(files, folder, phases));
   const DistanceSet& forward = measured.forward;
   const std::optional<DistanceSet>& reverse = measured.reverse;
-  // The large buffers are all made: kept ones would stay resident under the reports' and
-  // pictures' allocations and raise the peak (by 16 MB on the two-sided finishing job).
-  release_kept_buffers();
+  // The large buffers are made: kept ones would stay resident under the reports' and
+  // pictures' allocations and raise the peak (by 16 MB on the two-sided finishing job). The
+  // pictures' buffers (the lattice read for each PLY, the page's mesh: 10 MB each on that
+  // job) take some of the smaller ones.
+  release_kept_buffers(kPictureBuffers);
 
   VerificationReport report =
       make_verification_report(forward, reverse ? &*reverse : nullptr, report_options(options));

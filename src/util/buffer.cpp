@@ -1,5 +1,6 @@
 #include "util/buffer.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <mutex>
 #include <vector>
@@ -65,10 +66,19 @@ class FreedBlocks {
     return block.start;
   }
 
-  void release() noexcept {
+  // Unmaps the largest kept blocks until the others hold at most `bytes`.
+  void release_beyond(std::size_t bytes) noexcept {
     std::lock_guard lock(mutex_);
-    for (const Block& block : blocks_) munmap(block.start, block.bytes);
-    blocks_.clear();
+    std::sort(blocks_.begin(), blocks_.end(),
+              [](const Block& a, const Block& b) { return a.bytes < b.bytes; });
+    std::size_t kept = 0, count = 0;
+    while (count < blocks_.size() && kept + blocks_[count].bytes <= bytes) {
+      kept += blocks_[count++].bytes;
+    }
+    for (std::size_t k = count; k < blocks_.size(); ++k) {
+      munmap(blocks_[k].start, blocks_[k].bytes);
+    }
+    blocks_.resize(count);
   }
 
   void keep(void* start, std::size_t bytes) noexcept {
@@ -144,9 +154,11 @@ void free_huge(void* p, std::size_t) noexcept {
 
 namespace ncv {
 
-void release_kept_buffers() noexcept {
+void release_kept_buffers(std::size_t keep_bytes) noexcept {
 #if NCV_KEEP_FREED_BUFFERS
-  detail::freed_blocks().release();
+  detail::freed_blocks().release_beyond(keep_bytes);
+#else
+  (void)keep_bytes;
 #endif
 }
 

@@ -9,6 +9,10 @@
 
 #include <tbb/parallel_for.h>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 #include "util/buffer.hpp"
 
 using namespace ncv;
@@ -48,6 +52,31 @@ TEST_CASE("a freed large buffer is reused by the next one it can hold", "[buffer
   CHECK(address(smaller) == freed);
   std::fill(smaller.begin(), smaller.end(), 3u);
   CHECK(smaller.back() == 3u);
+}
+
+// Whether the page at `at` is mapped: mincore fails with ENOMEM where nothing is.
+bool mapped(std::uintptr_t at) {
+  unsigned char resident = 0;
+  return mincore(reinterpret_cast<void*>(at), 4096, &resident) == 0;
+}
+
+TEST_CASE("releasing the kept buffers keeps the smallest within the budget", "[buffer]") {
+  { const Buffer<char> larger_than_any(std::size_t{1} << 30); }
+  std::uintptr_t small = 0, large = 0;
+  {
+    Buffer<std::uint32_t> a(8 * kMiB / 4);
+    a.back() = 1;
+    small = address(a);
+    Buffer<std::uint32_t> b(32 * kMiB / 4);
+    b.back() = 1;
+    large = address(b);
+  }
+  release_kept_buffers(16 * kMiB);
+  CHECK(mapped(small));
+  CHECK_FALSE(mapped(large));
+  const Buffer<std::uint32_t> again(6 * kMiB / 4);
+  CHECK(address(again) == small);
+  release_kept_buffers(0);
 }
 #endif
 
