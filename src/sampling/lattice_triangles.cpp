@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include <tbb/parallel_for.h>
+#include "util/block_offsets.hpp"
 
 namespace ncv {
 
@@ -37,35 +37,20 @@ void row_distances(const SampleSet& samples, std::span<const double> d, std::siz
 }  // namespace
 
 // Where each patch whose index is a multiple of kStartStride lies: its triangle and its
-// place among that triangle's patches. Two parallel passes over blocks of triangles (their
-// patch counts, then the strides each block holds), as block_offsets makes offsets.
+// place among that triangle's patches, from the triangles' patch offsets (two parallel
+// passes, without storing an offset a triangle).
 std::vector<LatticePatches::Start> LatticePatches::find_starts() {
-  constexpr std::size_t kBlock = std::size_t{1} << 14;
-  const std::size_t triangles = samples_.lattice_sizes.size();
-  const std::size_t blocks = (triangles + kBlock - 1) / kBlock;
   const auto patches_of = [&](std::size_t t) {
     return lattice_triangle_count(samples_.lattice_sizes[t]);
   };
-  std::vector<std::uint64_t> block_first(blocks + 1, 0);
-  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-    std::uint64_t sum = 0;
-    for (std::size_t t = b * kBlock; t < std::min(triangles, (b + 1) * kBlock); ++t) {
-      sum += patches_of(t);
-    }
-    block_first[b + 1] = sum;
-  });
-  for (std::size_t b = 0; b < blocks; ++b) block_first[b + 1] += block_first[b];
-  size_ = block_first[blocks];
+  const std::size_t triangles = samples_.lattice_sizes.size();
+  const std::vector<std::uint64_t> block_first = block_starts<std::uint64_t>(triangles, patches_of);
+  size_ = block_first.back();
   std::vector<Start> starts((size_ + kStartStride - 1) / kStartStride);
-  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-    std::uint64_t first = block_first[b];
-    for (std::size_t t = b * kBlock; t < std::min(triangles, (b + 1) * kBlock); ++t) {
-      const std::uint64_t end = first + patches_of(t);
-      for (std::uint64_t k = (first + kStartStride - 1) / kStartStride; k * kStartStride < end;
-           ++k) {
-        starts[k] = {t, k * kStartStride - first};
-      }
-      first = end;
+  for_each_offset(triangles, patches_of, block_first, [&](std::size_t t, std::uint64_t first) {
+    const std::uint64_t end = first + patches_of(t);
+    for (std::uint64_t k = (first + kStartStride - 1) / kStartStride; k * kStartStride < end; ++k) {
+      starts[k] = {t, k * kStartStride - first};
     }
   });
   return starts;

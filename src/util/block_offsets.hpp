@@ -16,29 +16,47 @@
 
 namespace ncv {
 
-template <class Offset = std::uint64_t, class Count>
-Buffer<Offset> block_offsets(std::size_t n, Count&& count, Offset start = 0) {
-  constexpr std::size_t kBlock = 1 << 14;
-  const std::size_t blocks = (n + kBlock - 1) / kBlock;
-  std::vector<Offset> block_start(blocks + 1, 0);
-  block_start[0] = start;
+// The items go in blocks of kOffsetBlock, each block's sum made in parallel.
+inline constexpr std::size_t kOffsetBlock = std::size_t{1} << 14;
+
+// The first pass: where each block's records start (start, then the running sums of the
+// blocks' counts); the last entry is the end of all records.
+template <class Offset, class Count>
+std::vector<Offset> block_starts(std::size_t n, Count&& count, Offset start = 0) {
+  const std::size_t blocks = (n + kOffsetBlock - 1) / kOffsetBlock;
+  std::vector<Offset> starts(blocks + 1, 0);
+  starts[0] = start;
   tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
     Offset sum = 0;
-    for (std::size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) {
+    for (std::size_t i = b * kOffsetBlock; i < std::min(n, (b + 1) * kOffsetBlock); ++i) {
       sum += static_cast<Offset>(count(i));
     }
-    block_start[b + 1] = sum;
+    starts[b + 1] = sum;
   });
-  for (std::size_t b = 0; b < blocks; ++b) block_start[b + 1] += block_start[b];
-  Buffer<Offset> offsets(n + 1);  // every element written below
-  offsets[n] = block_start[blocks];
-  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-    Offset at = block_start[b];
-    for (std::size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) {
-      offsets[i] = at;
+  for (std::size_t b = 0; b < blocks; ++b) starts[b + 1] += starts[b];
+  return starts;
+}
+
+// The second pass: visit(i, offset) for every item with its records' offset, the blocks in
+// parallel, each from its start in block_starts.
+template <class Offset, class Count, class Visit>
+void for_each_offset(std::size_t n, Count&& count, const std::vector<Offset>& starts,
+                     Visit&& visit) {
+  tbb::parallel_for(std::size_t{0}, starts.size() - 1, [&](std::size_t b) {
+    Offset at = starts[b];
+    for (std::size_t i = b * kOffsetBlock; i < std::min(n, (b + 1) * kOffsetBlock); ++i) {
+      visit(i, at);
       at += static_cast<Offset>(count(i));
     }
   });
+}
+
+template <class Offset = std::uint64_t, class Count>
+Buffer<Offset> block_offsets(std::size_t n, Count&& count, Offset start = 0) {
+  const std::vector<Offset> starts = block_starts<Offset>(n, count, start);
+  Buffer<Offset> offsets(n + 1);  // every element written below
+  offsets[n] = starts.back();
+  for_each_offset(n, count, starts, [&](std::size_t i, Offset at) { offsets[i] = at; });
   return offsets;
 }
 
