@@ -43,6 +43,33 @@ std::vector<std::uint32_t> count_buckets(std::span<const double> values) {
   return counts;
 }
 
+// The wanted buckets' values (slot[bucket] numbers them), gathered by blocks in parallel and
+// joined in block order; their order is of no matter, as they are selected in.
+std::vector<std::vector<double>> gather_wanted(std::span<const double> values,
+                                               const std::vector<std::uint32_t>& slot,
+                                               std::size_t wanted) {
+  const std::size_t blocks = (values.size() + kBlock - 1) / kBlock;
+  std::vector<std::vector<std::vector<double>>> parts(blocks);
+  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+    std::vector<std::vector<double>>& part = parts[b];
+    part.resize(wanted);
+    const std::size_t end = std::min(values.size(), (b + 1) * kBlock);
+    for (std::size_t i = b * kBlock; i < end; ++i) {
+      const std::uint32_t w = slot[bucket(values[i])];
+      if (w != kNotWanted) part[w].push_back(values[i] + 0.0);
+    }
+  });
+  std::vector<std::vector<double>> gathered(wanted);
+  tbb::parallel_for(std::size_t{0}, wanted, [&](std::size_t w) {
+    std::size_t size = 0;
+    for (const auto& part : parts) size += part[w].size();
+    gathered[w].reserve(size);
+    for (const auto& part : parts)
+      gathered[w].insert(gathered[w].end(), part[w].begin(), part[w].end());
+  });
+  return gathered;
+}
+
 }  // namespace
 
 std::vector<double> values_at_ranks(std::span<const double> values,
@@ -62,15 +89,7 @@ std::vector<double> values_at_ranks(std::span<const double> values,
     rank_bucket[r] = slot[k];
     rank_within[r] = ranks[r] - below;
   }
-  // The wanted buckets' values, gathered in one pass (in any order: they are selected in).
-  std::vector<std::vector<double>> gathered(wanted_bucket.size());
-  for (std::size_t w = 0; w < wanted_bucket.size(); ++w) {
-    gathered[w].reserve(counts[wanted_bucket[w]]);
-  }
-  for (const double v : values) {
-    const std::uint32_t w = slot[bucket(v)];
-    if (w != kNotWanted) gathered[w].push_back(v + 0.0);
-  }
+  std::vector<std::vector<double>> gathered = gather_wanted(values, slot, wanted_bucket.size());
   std::vector<double> result(ranks.size());
   tbb::parallel_for(std::size_t{0}, gathered.size(), [&](std::size_t w) {
     std::vector<double>& bucket_values = gathered[w];
