@@ -222,16 +222,20 @@ void narrow_fresh(std::span<Bracket> brackets, std::span<const LinearPatch> patc
 }
 
 // Every fresh bracket narrowed over all patches: in two halves side by side, each half's
-// brackets sharing their passes over the patches, range after range.
-void narrow_all(std::span<Bracket> brackets, const PatchSource& patches) {
+// brackets sharing their passes over the patches, range after range; `along` rides on the
+// second half's pass, which has no more brackets than the first (or is its own pass).
+void narrow_all(std::span<Bracket> brackets, const PatchSource& patches,
+                const PatchRangeVisitor& along) {
   const std::size_t half = (brackets.size() + 1) / 2;
-  const auto narrow_over_all = [&](std::span<Bracket> some) {
-    if (some.empty()) return;  // one bracket: no second pass to make the patches for
-    for_each_patch_range(patches,
-                         [&](std::span<const LinearPatch> range) { narrow_fresh(some, range); });
+  const auto narrow_over_all = [&](std::span<Bracket> some, const PatchRangeVisitor* rider) {
+    if (some.empty() && !rider) return;  // one bracket: no second pass to make the patches for
+    for_each_patch_range(patches, [&](std::span<const LinearPatch> range) {
+      narrow_fresh(some, range);
+      if (rider) (*rider)(range);
+    });
   };
-  tbb::parallel_invoke([&] { narrow_over_all(brackets.first(half)); },
-                       [&] { narrow_over_all(brackets.subspan(half)); });
+  tbb::parallel_invoke([&] { narrow_over_all(brackets.first(half), nullptr); },
+                       [&] { narrow_over_all(brackets.subspan(half), along ? &along : nullptr); });
 }
 
 // With no corner value inside (a, b), F is base + spanning there: bisect it.
@@ -316,14 +320,17 @@ void AreaQuantiles::combine(std::vector<double>& acc, const std::vector<double>&
 
 std::vector<double> AreaQuantiles::quantiles(const PatchSource& patches,
                                              std::span<const double> fractions,
-                                             const std::vector<double>& sums) const {
+                                             const std::vector<double>& sums,
+                                             const PatchRangeVisitor& along) const {
   std::vector<double> result(fractions.size(), std::numeric_limits<double>::quiet_NaN());
-  if (values_.empty()) return result;
-  const std::vector<double>& split_values = splits_;
   // The first step ran over all patches once, shared by every fraction.
-  const std::vector<double> at_most = at_most_from(sums, split_values.size());
+  const std::vector<double> at_most = at_most_from(sums, splits_.size());
+  if (at_most.empty() || !(at_most.back() > 0)) {  // no values, or no area
+    if (along) for_each_patch_range(patches, along);
+    return result;
+  }
+  const std::vector<double>& split_values = splits_;
   const double total = at_most.back();
-  if (!(total > 0)) return result;
   // Each fraction's first bracket: (splits[j - 1], splits[j]), j = 0 when the fraction lies
   // at the smallest value. Fractions sharing a bracket share its narrowing.
   std::vector<std::size_t> first_bracket(fractions.size());
@@ -343,7 +350,7 @@ std::vector<double> AreaQuantiles::quantiles(const PatchSource& patches,
     brackets[k].a = split_values[opened[k] - 1];
     brackets[k].b = split_values[opened[k]];
   }
-  narrow_all(brackets, patches);
+  narrow_all(brackets, patches, along);
   tbb::parallel_for(std::size_t{0}, fractions.size(), [&](std::size_t f) {
     const std::size_t j = first_bracket[f];
     if (j == 0) {

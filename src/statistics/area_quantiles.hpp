@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/patch_source.hpp"
+#include "statistics/patch_passes.hpp"
 
 namespace ncv {
 
@@ -28,8 +29,12 @@ class AreaQuantiles {
   std::vector<double> zero() const;
   std::vector<double> block(std::span<const LinearPatch> patches) const;
   static void combine(std::vector<double>& acc, const std::vector<double>& part);
+  // `along`, when set, sees every patch once, in index order, on one thread, before this
+  // returns: it rides on one of the search's serial passes (the one with fewer brackets),
+  // or has a pass of its own beside them when there is no such pass.
   std::vector<double> quantiles(const PatchSource& patches, std::span<const double> fractions,
-                                const std::vector<double>& sums) const;
+                                const std::vector<double>& sums,
+                                const PatchRangeVisitor& along = {}) const;
 
  private:
   std::span<const double> values_;

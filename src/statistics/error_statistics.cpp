@@ -105,25 +105,17 @@ void add_moments(Moments& acc, const Moments& part) {
   acc.square += part.square;
 }
 
-Moments integrate(const PatchSource& patches, double shift) {
-  return reduce_patch_blocks(
-      patches, Moments{},
-      [&](std::span<const LinearPatch> block) { return integrate_block(block, shift); },
-      add_moments);
-}
-
 // The mean is docs/METHOD.md's d_mean = (1/|S1|) ∫ d dS over the lattice: divided by the whole
 // workpiece area, as the paper's eq. 7, so under scheme II the skipped triangles weigh in
 // with nothing (that is the paper's comparison of the schemes). RMS and spread describe
 // the sampled surface. The variance integrates (d - m)^2 in a second pass rather than
-// taking E[d^2] - m^2, which cancels catastrophically when the mean dwarfs the spread.
-void compute_moments(const PatchSource& patches, const Moments& raw, ErrorStatistics& stats) {
+// taking E[d^2] - m^2, which cancels catastrophically when the mean dwarfs the spread; that
+// pass rides on the percentiles' (compute_error_statistics).
+void compute_moments(const Moments& raw, ErrorStatistics& stats) {
   stats.sampled_area = raw.area;
   if (!(raw.area > 0)) return;
   stats.mean = raw.sum / (stats.workpiece_area > 0 ? stats.workpiece_area : raw.area);
   stats.rms = std::sqrt(raw.square / raw.area);
-  const double sampled_mean = raw.sum / raw.area;
-  stats.std_dev = std::sqrt(integrate(patches, sampled_mean).square / raw.area);
 }
 
 ToleranceAreas clip_block(std::span<const LinearPatch> patches, const Tolerance& zone) {
@@ -178,10 +170,11 @@ FirstPass first_pass(const PatchSource& patches, const std::optional<Tolerance>&
 
 std::vector<Percentile> compute_percentiles(const PatchSource& patches,
                                             const AreaQuantiles& quantiles,
-                                            const std::vector<double>& sums) {
+                                            const std::vector<double>& sums,
+                                            const PatchRangeVisitor& along) {
   std::vector<double> fractions;
   for (double percent : kReportedPercentiles) fractions.push_back(percent / 100);
-  const std::vector<double> values = quantiles.quantiles(patches, fractions, sums);
+  const std::vector<double> values = quantiles.quantiles(patches, fractions, sums, along);
   std::vector<Percentile> percentiles;
   for (std::size_t k = 0; k < values.size(); ++k) {
     percentiles.push_back({kReportedPercentiles[k], values[k]});
@@ -205,10 +198,17 @@ ErrorStatistics compute_error_statistics(const SampleSet& samples, std::span<con
       histogram.range.value_or(ValueRange{stats.min.value, stats.max.value}), histogram.bins);
   const AreaQuantiles quantiles(d);
   const FirstPass first = first_pass(patches, tolerance, histogram_sums, quantiles);
-  compute_moments(patches, first.raw, stats);
+  compute_moments(first.raw, stats);
   if (tolerance) stats.tolerance = *first.tolerance;
   stats.histogram = histogram_sums.histogram(first.histogram);
-  stats.percentiles = compute_percentiles(patches, quantiles, first.quantiles);
+  const Moments& raw = first.raw;
+  const double sampled_mean = raw.area > 0 ? raw.sum / raw.area : 0.0;
+  OrderedPatchSum deviation(
+      [sampled_mean](const LinearPatch& p) { return squared_integral(p, sampled_mean); });
+  stats.percentiles =
+      compute_percentiles(patches, quantiles, first.quantiles,
+                          [&](std::span<const LinearPatch> range) { deviation.add(range); });
+  if (raw.area > 0) stats.std_dev = std::sqrt(deviation.sum() / raw.area);
   return stats;
 }
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <utility>
 
@@ -32,6 +33,42 @@ T reduce_patch_blocks(const PatchSource& source, T identity, ReduceBlock&& reduc
       },
       combine);
 }
+
+// The sum of term(p) over patches fed a range at a time in index order, however the ranges
+// are cut: each block of kPatchBlock patches summed from zero, the blocks' sums added in
+// order, which is reduce_patch_blocks' sum of the same terms, to the bit. A serial pass can
+// so make a parallel pass's sum without a pass of its own.
+template <class Term>
+class OrderedPatchSum {
+ public:
+  explicit OrderedPatchSum(Term term) : term_(std::move(term)) {}
+
+  void add(std::span<const LinearPatch> range) {
+    while (!range.empty()) {
+      if (position_ % kPatchBlock == 0 && position_ > 0) {
+        total_ += block_;
+        block_ = 0;
+      }
+      const std::size_t n = std::min(range.size(), kPatchBlock - position_ % kPatchBlock);
+      for (const LinearPatch& p : range.first(n)) block_ += term_(p);
+      position_ += n;
+      range = range.subspan(n);
+    }
+  }
+
+  // The last block is still open: a block is added when the next one starts.
+  double sum() const { return position_ > 0 ? total_ + block_ : 0.0; }
+
+ private:
+  Term term_;
+  std::size_t position_ = 0;
+  double block_ = 0;
+  double total_ = 0;
+};
+
+// A consumer of every patch once, a range at a time in index order, on one thread: a serial
+// pass that another pass over the same patches can carry along instead of making them again.
+using PatchRangeVisitor = std::function<void(std::span<const LinearPatch>)>;
 
 // visit(patches) for consecutive ranges covering all patches, in index order, on this thread.
 template <class Visit>
