@@ -4,7 +4,6 @@
 #include <bit>
 #include <cstdint>
 
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 namespace ncv {
@@ -15,6 +14,10 @@ constexpr int kDigitBits = 16;
 constexpr std::size_t kBuckets = std::size_t{1} << kDigitBits;
 constexpr std::size_t kBlock = std::size_t{1} << 18;
 constexpr std::uint32_t kNotWanted = ~std::uint32_t{0};
+// A bucket up to this size is selected in by nth_element; a larger one by its next digit.
+// (Half the finishing part's errors are rounding noise within one top digit: nth_element
+// for each of its dozen ranks took 3.3 ms, longer than the pass that counted all values.)
+constexpr std::size_t kSelectDirectly = std::size_t{1} << 14;
 
 // Order-preserving: a < b as doubles (not NaN) iff key(a) < key(b), and a == b iff the
 // keys are equal (adding +0.0 makes -0.0 the bit pattern of +0.0).
@@ -23,49 +26,129 @@ std::uint64_t key(double v) {
   return bits >> 63 ? ~bits : bits | (std::uint64_t{1} << 63);
 }
 
-std::size_t bucket(double v) {
-  return static_cast<std::size_t>(key(v) >> (64 - kDigitBits));
+// The 16-bit digit of the key `shift` bits up.
+std::size_t digit(double v, int shift) {
+  return static_cast<std::size_t>(key(v) >> shift) & (kBuckets - 1);
 }
 
-std::vector<std::uint32_t> count_buckets(std::span<const double> values) {
+constexpr int kTopShift = 64 - kDigitBits;
+
+// Where each wanted rank lies: its bucket's number among the wanted buckets, and its rank
+// within that bucket. slot[bucket] numbers the wanted buckets (kNotWanted for the others).
+struct RankPlaces {
+  std::vector<std::uint32_t> slot = std::vector<std::uint32_t>(kBuckets, kNotWanted);
+  std::vector<std::size_t> wanted_bucket;
+  std::vector<std::uint32_t> rank_bucket;
+  std::vector<std::size_t> rank_within;
+};
+
+RankPlaces place_ranks(const std::vector<std::size_t>& counts, std::span<const std::size_t> ranks) {
+  RankPlaces places;
+  places.rank_bucket.resize(ranks.size());
+  places.rank_within.resize(ranks.size());
+  std::size_t below = 0, k = 0;
+  for (std::size_t r = 0; r < ranks.size(); ++r) {
+    while (below + counts[k] <= ranks[r]) below += counts[k++];
+    if (places.slot[k] == kNotWanted) {
+      places.slot[k] = static_cast<std::uint32_t>(places.wanted_bucket.size());
+      places.wanted_bucket.push_back(k);
+    }
+    places.rank_bucket[r] = places.slot[k];
+    places.rank_within[r] = ranks[r] - below;
+  }
+  return places;
+}
+
+// The values of ranks (ascending) among `values`, whose keys agree above `shift + 16` bits:
+// small sets by nth_element, each rank in the part above the one before; larger ones by
+// their digit at `shift`, each wanted digit's values selected in again. Below the last digit
+// the keys agree in every bit: the values are all one.
+void select(std::vector<double>& values, std::span<const std::size_t> ranks, int shift,
+            double* result) {
+  if (shift < 0) {
+    std::fill_n(result, ranks.size(), values.front());
+    return;
+  }
+  if (values.size() <= kSelectDirectly) {
+    std::size_t done = 0;
+    for (std::size_t r = 0; r < ranks.size(); ++r) {
+      const auto at = values.begin() + static_cast<std::ptrdiff_t>(ranks[r]);
+      std::nth_element(values.begin() + static_cast<std::ptrdiff_t>(done), at, values.end());
+      result[r] = *at;
+      done = ranks[r];
+    }
+    return;
+  }
+  std::vector<std::size_t> counts(kBuckets, 0);
+  for (const double v : values) ++counts[digit(v, shift)];
+  if (counts[digit(values.front(), shift)] == values.size()) {  // one digit: no copy
+    select(values, ranks, shift - kDigitBits, result);
+    return;
+  }
+  const RankPlaces places = place_ranks(counts, ranks);
+  std::vector<std::vector<double>> wanted(places.wanted_bucket.size());
+  for (std::size_t w = 0; w < wanted.size(); ++w) {
+    wanted[w].reserve(counts[places.wanted_bucket[w]]);
+  }
+  for (const double v : values) {
+    const std::uint32_t w = places.slot[digit(v, shift)];
+    if (w != kNotWanted) wanted[w].push_back(v);
+  }
+  for (std::size_t r = 0; r < ranks.size();) {
+    const std::uint32_t w = places.rank_bucket[r];
+    std::size_t end = r;
+    while (end < ranks.size() && places.rank_bucket[end] == w) ++end;
+    select(wanted[w], std::span(places.rank_within).subspan(r, end - r), shift - kDigitBits,
+           result + r);
+    r = end;
+  }
+}
+
+// The top digits' counts, per block of kBlock values (parts[b]) and in all.
+struct TopCounts {
+  std::vector<std::vector<std::size_t>> parts;
+  std::vector<std::size_t> all;
+};
+
+TopCounts count_top_digits(std::span<const double> values) {
   const std::size_t blocks = (values.size() + kBlock - 1) / kBlock;
-  std::vector<std::vector<std::uint32_t>> parts(blocks);
+  TopCounts counts{std::vector<std::vector<std::size_t>>(blocks),
+                   std::vector<std::size_t>(kBuckets, 0)};
   tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-    std::vector<std::uint32_t>& part = parts[b];
+    std::vector<std::size_t>& part = counts.parts[b];
     part.assign(kBuckets, 0);
     const std::size_t end = std::min(values.size(), (b + 1) * kBlock);
-    for (std::size_t i = b * kBlock; i < end; ++i) ++part[bucket(values[i])];
+    for (std::size_t i = b * kBlock; i < end; ++i) ++part[digit(values[i], kTopShift)];
   });
-  std::vector<std::uint32_t> counts(kBuckets, 0);
-  for (const auto& part : parts) {
-    for (std::size_t k = 0; k < kBuckets; ++k) counts[k] += part[k];
+  for (const auto& part : counts.parts) {
+    for (std::size_t k = 0; k < kBuckets; ++k) counts.all[k] += part[k];
   }
   return counts;
 }
 
-// The wanted buckets' values (slot[bucket] numbers them), gathered by blocks in parallel and
-// joined in block order; their order is of no matter, as they are selected in.
+// The wanted buckets' values, each plus +0.0, gathered by blocks in parallel, each block
+// writing after the earlier blocks' values of the same bucket.
 std::vector<std::vector<double>> gather_wanted(std::span<const double> values,
-                                               const std::vector<std::uint32_t>& slot,
-                                               std::size_t wanted) {
-  const std::size_t blocks = (values.size() + kBlock - 1) / kBlock;
-  std::vector<std::vector<std::vector<double>>> parts(blocks);
-  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-    std::vector<std::vector<double>>& part = parts[b];
-    part.resize(wanted);
+                                               const TopCounts& counts, const RankPlaces& places) {
+  const std::size_t wanted = places.wanted_bucket.size();
+  std::vector<std::vector<double>> gathered(wanted);
+  std::vector<std::vector<std::size_t>> starts(counts.parts.size(),
+                                               std::vector<std::size_t>(wanted));
+  for (std::size_t w = 0; w < wanted; ++w) {
+    std::size_t at = 0;
+    for (std::size_t b = 0; b < counts.parts.size(); ++b) {
+      starts[b][w] = at;
+      at += counts.parts[b][places.wanted_bucket[w]];
+    }
+    gathered[w].resize(at);
+  }
+  tbb::parallel_for(std::size_t{0}, counts.parts.size(), [&](std::size_t b) {
+    std::vector<std::size_t>& next = starts[b];
     const std::size_t end = std::min(values.size(), (b + 1) * kBlock);
     for (std::size_t i = b * kBlock; i < end; ++i) {
-      const std::uint32_t w = slot[bucket(values[i])];
-      if (w != kNotWanted) part[w].push_back(values[i] + 0.0);
+      const std::uint32_t w = places.slot[digit(values[i], kTopShift)];
+      if (w != kNotWanted) gathered[w][next[w]++] = values[i] + 0.0;
     }
-  });
-  std::vector<std::vector<double>> gathered(wanted);
-  tbb::parallel_for(std::size_t{0}, wanted, [&](std::size_t w) {
-    std::size_t size = 0;
-    for (const auto& part : parts) size += part[w].size();
-    gathered[w].reserve(size);
-    for (const auto& part : parts)
-      gathered[w].insert(gathered[w].end(), part[w].begin(), part[w].end());
   });
   return gathered;
 }
@@ -75,34 +158,17 @@ std::vector<std::vector<double>> gather_wanted(std::span<const double> values,
 std::vector<double> values_at_ranks(std::span<const double> values,
                                     std::span<const std::size_t> ranks) {
   if (ranks.empty()) return {};
-  const std::vector<std::uint32_t> counts = count_buckets(values);
-  // Each wanted rank's bucket, and the rank within it; the wanted buckets numbered.
-  std::vector<std::uint32_t> slot(kBuckets, kNotWanted);
-  std::vector<std::size_t> wanted_bucket, rank_bucket(ranks.size()), rank_within(ranks.size());
-  std::size_t below = 0, k = 0;
-  for (std::size_t r = 0; r < ranks.size(); ++r) {
-    while (below + counts[k] <= ranks[r]) below += counts[k++];
-    if (slot[k] == kNotWanted) {
-      slot[k] = static_cast<std::uint32_t>(wanted_bucket.size());
-      wanted_bucket.push_back(k);
-    }
-    rank_bucket[r] = slot[k];
-    rank_within[r] = ranks[r] - below;
-  }
-  std::vector<std::vector<double>> gathered = gather_wanted(values, slot, wanted_bucket.size());
+  const TopCounts counts = count_top_digits(values);
+  const RankPlaces places = place_ranks(counts.all, ranks);
+  std::vector<std::vector<double>> gathered = gather_wanted(values, counts, places);
   std::vector<double> result(ranks.size());
+  // Each wanted bucket's ranks are consecutive (both ascend): selected side by side.
+  std::vector<std::size_t> first_rank(gathered.size() + 1, ranks.size());
+  for (std::size_t r = ranks.size(); r-- > 0;) first_rank[places.rank_bucket[r]] = r;
   tbb::parallel_for(std::size_t{0}, gathered.size(), [&](std::size_t w) {
-    std::vector<double>& bucket_values = gathered[w];
-    // This bucket's ranks, ascending: each selected in the part above the one before.
-    std::size_t done = 0;
-    for (std::size_t r = 0; r < ranks.size(); ++r) {
-      if (rank_bucket[r] != w) continue;
-      const auto at = bucket_values.begin() + static_cast<std::ptrdiff_t>(rank_within[r]);
-      std::nth_element(bucket_values.begin() + static_cast<std::ptrdiff_t>(done), at,
-                       bucket_values.end());
-      result[r] = *at;
-      done = rank_within[r];
-    }
+    const std::size_t begin = first_rank[w], end = first_rank[w + 1];
+    select(gathered[w], std::span(places.rank_within).subspan(begin, end - begin),
+           kTopShift - kDigitBits, result.data() + begin);
   });
   return result;
 }
