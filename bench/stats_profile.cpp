@@ -5,6 +5,7 @@
 // (moments, tolerance areas, histogram, percentiles: compute_error_statistics), the
 // out-of-tolerance regions (map_error_regions) and the reports' text (text, JSON, CSV,
 // regions CSV, histogram CSV and SVG), per direction, and their sum.
+#include <malloc.h>
 #include <tbb/global_control.h>
 
 #include <algorithm>
@@ -63,6 +64,10 @@ void profile(const char* name, const ncv::DistanceSet& set, const ncv::ReportOpt
 }  // namespace
 
 int main(int argc, char** argv) {
+  // glibc's limits as ncverify sets them (cmd/main.cpp): with glibc's defaults the brackets'
+  // growing arrays were mapped fresh every time, and the timings depended on what ran before.
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 64 << 20);
   std::vector<std::string> files;
   ncv::ReportOptions options;
   int threads = 0, reps = 7;
