@@ -295,7 +295,7 @@ std::vector<double> values_inside(std::span<const double> values, double a, doub
   for (const double v : values) {
     if (a < v && v < b) inside.push_back(v + 0.0);
   }
-  std::sort(inside.begin(), inside.end());
+  sort_values(inside);
   return inside;
 }
 

@@ -1,8 +1,10 @@
 #include "statistics/rank_selection.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstdint>
+#include <utility>
 
 #include <tbb/parallel_for.h>
 
@@ -24,6 +26,10 @@ constexpr std::size_t kSelectDirectly = std::size_t{1} << 14;
 std::uint64_t key(double v) {
   const auto bits = std::bit_cast<std::uint64_t>(v + 0.0);
   return bits >> 63 ? ~bits : bits | (std::uint64_t{1} << 63);
+}
+
+double value_of(std::uint64_t k) {
+  return std::bit_cast<double>(k >> 63 ? k ^ (std::uint64_t{1} << 63) : ~k);
 }
 
 // The 16-bit digit of the key `shift` bits up.
@@ -171,6 +177,27 @@ std::vector<double> values_at_ranks(std::span<const double> values,
            kTopShift - kDigitBits, result.data() + begin);
   });
   return result;
+}
+
+void sort_values(std::vector<double>& values) {
+  constexpr int kBytes = 8;
+  const std::size_t n = values.size();
+  if (n < 2) return;
+  std::vector<std::uint64_t> keys(n), moved(n);
+  std::array<std::array<std::size_t, 256>, kBytes> counts{};
+  for (std::size_t i = 0; i < n; ++i) {
+    keys[i] = key(values[i]);
+    for (int b = 0; b < kBytes; ++b) ++counts[b][(keys[i] >> (8 * b)) & 255];
+  }
+  for (int b = 0; b < kBytes; ++b) {
+    std::array<std::size_t, 256>& at = counts[b];
+    if (at[(keys[0] >> (8 * b)) & 255] == n) continue;  // every key has this byte
+    std::size_t start = 0;
+    for (std::size_t& count : at) start += std::exchange(count, start);
+    for (const std::uint64_t k : keys) moved[at[(k >> (8 * b)) & 255]++] = k;
+    keys.swap(moved);
+  }
+  for (std::size_t i = 0; i < n; ++i) values[i] = value_of(keys[i]);
 }
 
 }  // namespace ncv

@@ -18,4 +18,10 @@ namespace ncv {
 std::vector<double> values_at_ranks(std::span<const double> values,
                                     std::span<const std::size_t> ranks);
 
+// Sorts ascending by the same keys, a byte at a time from the lowest (an LSD radix sort; a
+// byte all values share is skipped): std::sort's order for values that are not NaN and not
+// -0.0, to the bit. Sorting the values inside the percentiles' brackets (40 k each on the
+// finishing part) so took their refinement from 18.5 to 14.8 ms on 2 threads.
+void sort_values(std::vector<double>& values);
+
 }  // namespace ncv

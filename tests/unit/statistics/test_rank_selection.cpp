@@ -57,3 +57,18 @@ TEST_CASE("values at ranks are those of the sorted values", "[stats][quantiles]"
     }
   }
 }
+
+TEST_CASE("sorted by their keys, values are in std::sort's order to the bit", "[stats]") {
+  for (const std::size_t count : {0, 1, 2, 300, 40000}) {
+    std::vector<double> values = mixed_values(count, count + 7);
+    for (double& v : values) v += 0.0;  // no -0.0, as the function asks
+    std::vector<double> expected = values;
+    std::sort(expected.begin(), expected.end());
+    ncv::sort_values(values);
+    REQUIRE(values.size() == expected.size());
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      INFO(count << " values, position " << k);
+      CHECK(std::bit_cast<std::uint64_t>(values[k]) == std::bit_cast<std::uint64_t>(expected[k]));
+    }
+  }
+}
