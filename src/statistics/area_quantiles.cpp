@@ -32,26 +32,43 @@ std::size_t lower_bound_index(const std::vector<double>& splits, double x) {
   return static_cast<std::size_t>(base - splits.data()) + (length == 1 && *base < x ? 1 : 0);
 }
 
-// sums[j] += area_at_most(p, splits[j]) for the splits [begin, end), all inside [lo, hi):
-// two at a time, each lane the closed form's own operations in its order (so the same bits),
-// both branches computed and the one area_strictly_inside takes selected (the other lane's
-// quotients may divide by zero; they are dropped). Where most corner values are rounding
-// noise around zero (a part on its nominal), the first splits all fall within the noise and
-// every patch across it spans them all: two divisions a split were most of this pass.
-void add_areas_inside(const LinearPatch& p, const double* splits, std::size_t begin,
-                      std::size_t end, double* sums) {
-  using Pair = double __attribute__((vector_size(16)));
-  std::size_t j = begin;
-  for (; j + 2 <= end; j += 2) {
-    const Pair t{splits[j], splits[j + 1]};
-    const Pair rise = t - p.lo, fall = p.hi - t;
-    const Pair up = p.area * (rise / (p.mid - p.lo)) * (rise / (p.hi - p.lo));
-    const Pair down = p.area - p.area * (fall / (p.hi - p.lo)) * (fall / (p.hi - p.mid));
-    const Pair area = t < p.mid ? up : down;
-    sums[j] += area[0];
-    sums[j + 1] += area[1];
+// GCC's vector extension, kLanes doubles (its attribute takes no template argument).
+template <int kLanes>
+struct LanesOf;
+template <>
+struct LanesOf<2> {
+  typedef double type __attribute__((vector_size(16)));
+};
+template <>
+struct LanesOf<4> {
+  typedef double type __attribute__((vector_size(32)));
+};
+
+// sums[j] += area_at_most(p, splits[j]) for the splits [j, end), all inside [lo, hi):
+// kLanes at a time, then fewer, each lane the closed form's own operations in its order (so
+// the same bits), both branches computed and the one area_strictly_inside takes selected
+// (the other lane's quotients may divide by zero; they are dropped). Where most corner
+// values are rounding noise around zero (a part on its nominal), the first splits all fall
+// within the noise and every patch across it spans them all: two divisions a split were
+// most of this pass.
+template <int kLanes>
+[[gnu::always_inline]] inline void add_areas_inside(const LinearPatch& p, const double* splits,
+                                                    std::size_t j, std::size_t end, double* sums) {
+  if constexpr (kLanes == 1) {
+    if (j < end) sums[j] += area_strictly_inside(p, splits[j]);
+  } else {
+    using Lanes = typename LanesOf<kLanes>::type;
+    for (; j + kLanes <= end; j += kLanes) {
+      Lanes t;
+      for (int k = 0; k < kLanes; ++k) t[k] = splits[j + k];
+      const Lanes rise = t - p.lo, fall = p.hi - t;
+      const Lanes up = p.area * (rise / (p.mid - p.lo)) * (rise / (p.hi - p.lo));
+      const Lanes down = p.area - p.area * (fall / (p.hi - p.lo)) * (fall / (p.hi - p.mid));
+      const Lanes area = t < p.mid ? up : down;
+      for (int k = 0; k < kLanes; ++k) sums[j + k] += area[k];
+    }
+    add_areas_inside<kLanes / 2>(p, splits, j, end, sums);
   }
-  if (j < end) sums[j] += area_strictly_inside(p, splits[j]);
 }
 
 // One block's share of the distribution function at each split point (ascending): [0, m)
@@ -59,7 +76,9 @@ void add_areas_inside(const LinearPatch& p, const double* splits, std::size_t be
 // by the first split at or above them.
 using SplitSums = std::vector<double>;
 
-SplitSums split_sums(std::span<const LinearPatch> patches, const std::vector<double>& splits) {
+template <int kLanes>
+[[gnu::always_inline]] inline SplitSums split_sums_by(std::span<const LinearPatch> patches,
+                                                      const std::vector<double>& splits) {
   const std::size_t m = splits.size();
   SplitSums part(2 * m + 1, 0.0);
   // Neighbouring patches mostly lie between the same two splits, (low, high]: then both
@@ -75,7 +94,7 @@ SplitSums split_sums(std::span<const LinearPatch> patches, const std::vector<dou
     // mispredicted its exit about once a patch).
     const std::size_t first = lower_bound_index(splits, p.lo);
     const std::size_t whole = lower_bound_index(splits, p.hi);
-    add_areas_inside(p, splits.data(), first, whole, part.data());
+    add_areas_inside<kLanes>(p, splits.data(), first, whole, part.data());
     part[m + whole] += p.area;
     last = whole;
     low = whole > 0 ? splits[whole - 1] : -std::numeric_limits<double>::infinity();
@@ -83,6 +102,30 @@ SplitSums split_sums(std::span<const LinearPatch> patches, const std::vector<dou
   }
   return part;
 }
+
+#if defined(__x86_64__) && defined(__GNUC__)
+// Four lanes where the CPU has AVX2, two (SSE2, which every x86-64 has) elsewhere: four
+// lanes built for SSE2 alone were slower than one. The statistics (profile tool, 2 threads)
+// of the finishing part 68 -> 64.5 ms, of the uncut slot 80 -> 75 ms. Without FMA, so that
+// no product and sum are fused: the same bits either way.
+SplitSums split_sums_sse2(std::span<const LinearPatch> patches, const std::vector<double>& splits) {
+  return split_sums_by<2>(patches, splits);
+}
+
+[[gnu::target("avx2")]] SplitSums split_sums_avx2(std::span<const LinearPatch> patches,
+                                                  const std::vector<double>& splits) {
+  return split_sums_by<4>(patches, splits);
+}
+
+SplitSums split_sums(std::span<const LinearPatch> patches, const std::vector<double>& splits) {
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  return avx2 ? split_sums_avx2(patches, splits) : split_sums_sse2(patches, splits);
+}
+#else
+SplitSums split_sums(std::span<const LinearPatch> patches, const std::vector<double>& splits) {
+  return split_sums_by<2>(patches, splits);
+}
+#endif
 
 void add_split_sums(SplitSums& acc, const SplitSums& part) {
   for (std::size_t k = 0; k < acc.size(); ++k) acc[k] += part[k];
