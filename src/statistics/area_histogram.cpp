@@ -52,7 +52,6 @@ std::size_t add_patch(BinSums& sums, const BinEdges& edges, const LinearPatch& p
   const std::size_t bins = edges.bins();
   double& below = sums[bins];
   double& above = sums[bins + 1];
-  sums[bins + 2] += p.area;
   if (p.hi < edges.front()) {
     below += p.area;
     return 0;
@@ -80,23 +79,30 @@ std::size_t add_patch(BinSums& sums, const BinEdges& edges, const LinearPatch& p
   return last;
 }
 
-// One block's bins. Neighbouring patches mostly fall into the bin of the patch before:
-// when one lies inside (edge k, edge k + 1], both bin searches would give k and the whole
-// area goes there, which the test does without them.
+// One block's bins, into sums at zero. Neighbouring patches mostly fall into the bin of the
+// patch before: when one lies inside (edge k, edge k + 1], both bin searches would give k
+// and the whole area goes there, which the test does without them. The total and that
+// bin's sum are kept in registers, each add the one it was (through memory each waited for
+// the store before it).
 void add_patches(BinSums& sums, const BinEdges& edges, std::span<const LinearPatch> patches) {
-  const std::size_t total = edges.bins() + 2;
+  double total = 0;
   std::size_t bin = 0;
+  double in_bin = sums[bin];
   double low = INFINITY, high = -INFINITY;
   for (const LinearPatch& p : patches) {
+    total += p.area;
     if (low < p.lo && p.hi <= high) {
-      sums[total] += p.area;
-      sums[bin] += p.area;
+      in_bin += p.area;
       continue;
     }
+    sums[bin] = in_bin;
     bin = add_patch(sums, edges, p);
+    in_bin = sums[bin];
     low = edges[bin];
     high = edges[bin + 1];
   }
+  sums[bin] = in_bin;
+  sums[edges.bins() + 2] = total;
 }
 
 }  // namespace

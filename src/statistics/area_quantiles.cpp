@@ -83,23 +83,28 @@ template <int kLanes>
   SplitSums part(2 * m + 1, 0.0);
   // Neighbouring patches mostly lie between the same two splits, (low, high]: then both
   // searches would give `last` and the patch adds its whole area there.
+  // That sum is kept in a register meanwhile, each add the one it was (through memory each
+  // waited for the store before it).
   std::size_t last = 0;
+  double in_last = 0;
   double low = -std::numeric_limits<double>::infinity(), high = low;
   for (const LinearPatch& p : patches) {
     if (low < p.lo && p.hi <= high) {
-      part[m + last] += p.area;
+      in_last += p.area;
       continue;
     }
+    part[m + last] = in_last;
     // The splits in [lo, hi): both ends searched without a branch (a walk from the first
     // mispredicted its exit about once a patch).
     const std::size_t first = lower_bound_index(splits, p.lo);
     const std::size_t whole = lower_bound_index(splits, p.hi);
     add_areas_inside<kLanes>(p, splits.data(), first, whole, part.data());
-    part[m + whole] += p.area;
     last = whole;
+    in_last = part[m + last] + p.area;
     low = whole > 0 ? splits[whole - 1] : -std::numeric_limits<double>::infinity();
     high = whole < m ? splits[whole] : std::numeric_limits<double>::infinity();
   }
+  part[m + last] = in_last;
   return part;
 }
 
