@@ -284,6 +284,54 @@ def yardstick_section(p):
     p("")
 
 
+ISSUE_SAMPLES = 1_800_000  # issue 24's stats target: 0.1 s for this many samples
+
+
+def sample_count(workpiece, step):
+    """How many samples `ncverify sample` makes of the workpiece at the step (from its log)."""
+    with tempfile.TemporaryDirectory(dir=os.environ.get("NCV_BENCH_TMP")) as tmp:
+        out = subprocess.run([NCV, "sample", workpiece, "--step", step, "--force", "-o",
+                              os.path.join(tmp, "s.samples")], stderr=subprocess.PIPE,
+                             stdout=subprocess.DEVNULL, text=True, check=True).stderr
+    return int(re.search(r"info: (\d+) samples", out).group(1))
+
+
+def step_for(workpiece, samples):
+    """The coarsest step (% of the diagonal, to 0.0005 %) that gives at least `samples`, by
+    bisection between 0.01 % and 0.1 % (the count falls as the step grows)."""
+    fine, coarse = 0.01, 0.1
+    if sample_count(workpiece, f"{coarse}%") >= samples:
+        return f"{coarse}%"
+    while coarse - fine > 0.0005:
+        middle = (fine + coarse) / 2
+        if sample_count(workpiece, f"{middle:.5f}%") >= samples:
+            fine = middle
+        else:
+            coarse = middle
+    return f"{fine:.5f}%"
+
+
+# A finishing tolerance: the gouge, the scallops and every stage's stock lie out of it, so the
+# stats phase also finds regions (the issue's target includes them).
+ISSUE_TOLERANCE = "-0.05:0.1"
+
+
+def stats_at_issue_scale(p):
+    """Issue 24's stats target measured, not scaled: every yardstick workload sampled finely
+    enough for 1.8 M samples, `run --one-sided --tol` on 2 threads, the median stats phase."""
+    p(f"== The stats phase at {ISSUE_SAMPLES / 1e6:.1f} M samples (issue 24: <= 0.1 s), "
+      f"run --one-sided --tol {ISSUE_TOLERANCE}, 2 threads, median of {REPS} ==")
+    p(f"{'family':<10}{'stage':<15}{'step':>10}{'samples':>10}{'stats s':>9}  met")
+    for family, stage, workpiece, nominal in yardstick_stages():
+        step = step_for(workpiece, ISSUE_SAMPLES)
+        runs = [run(workpiece, nominal, 2, step=step,
+                    extra=("--one-sided", "--tol", ISSUE_TOLERANCE))[0] for _ in range(REPS)]
+        stats = statistics.median(t["phases"]["stats"] for t in runs)
+        p(f"{family:<10}{stage:<15}{step:>10}{runs[0]['samples']:>10}{stats:>9.3f}  "
+          f"{'yes' if stats <= 0.1 else 'NO'}")
+    p("")
+
+
 def ns_per_sample(t):
     """The distance phase's wall time per sample, in nanoseconds."""
     return t["phases"]["distance"] / t["samples"] * 1e9
@@ -295,6 +343,7 @@ def main():
     p = lines.append
     if ONLY == "yardstick":
         yardstick_section(p)
+        stats_at_issue_scale(p)
         p(f"(bench took {time.time() - started:.0f} s; load average "
           f"{os.getloadavg()[0]:.2f} at the end; {REPS} repetitions)")
         print("\n".join(lines))
@@ -477,6 +526,7 @@ def main():
           f"{b_perfect / a_perfect:.2f}")
     p("")
     yardstick_section(p)
+    stats_at_issue_scale(p)
     p("== Finishing phases, 1 vs 2 threads (median of runs, s) ==")
     p(f"{'threads':<8}" + "".join(f"{ph:>11}" for ph in PHASES) + f"{'total':>9}")
     for label, t in (("1", fin1), ("2", fin2)):
