@@ -34,6 +34,16 @@ void row_distances(const SampleSet& samples, std::span<const double> d, std::siz
   }
 }
 
+// Whether vertex v's sample is sample v for every vertex: then a corner's distance is read
+// without vertex_sample (one random load a corner fewer where the triangles come in random
+// order).
+bool vertex_samples_in_order(const SampleSet& samples) {
+  const std::span<const std::uint32_t> numbers = samples.vertex_sample;
+  return samples.first_sample == 0 &&
+         std::all_of(numbers.begin(), numbers.end(),
+                     [&, v = std::uint32_t{0}](std::uint32_t s) mutable { return s == v++; });
+}
+
 }  // namespace
 
 // Where each patch whose index is a multiple of kStartStride lies: its triangle and its
@@ -57,10 +67,20 @@ std::vector<LatticePatches::Start> LatticePatches::find_starts() {
 }
 
 LatticePatches::LatticePatches(const SampleSet& samples, std::span<const double> d)
-    : samples_(samples), d_(d), starts_(find_starts()) {}
+    : samples_(samples),
+      d_(d),
+      starts_(find_starts()),
+      vertices_in_order_(vertex_samples_in_order(samples)) {}
 
 std::span<const LinearPatch> LatticePatches::range(std::size_t begin, std::size_t end,
                                                    std::span<LinearPatch> scratch) const {
+  return vertices_in_order_ ? range_of<true>(begin, end, scratch)
+                            : range_of<false>(begin, end, scratch);
+}
+
+template <bool kVerticesInOrder>
+std::span<const LinearPatch> LatticePatches::range_of(std::size_t begin, std::size_t end,
+                                                      std::span<LinearPatch> scratch) const {
   if (begin == end) return {};
   // The triangle holding patch `begin`, from the stride point at or before it.
   const Start& start = starts_[begin / kStartStride];
@@ -76,7 +96,9 @@ std::span<const LinearPatch> LatticePatches::range(std::size_t begin, std::size_
     const std::uint32_t n = samples_.lattice_sizes[t];
     if (n == 2) {  // most triangles of a fine mesh: one patch, the corners'
       const auto& corner = samples_.mesh.triangles[t];
-      const auto at_corner = [&](int k) { return d_[samples_.vertex_sample[corner[k]]]; };
+      const auto at_corner = [&](int k) {
+        return d_[kVerticesInOrder ? corner[k] : samples_.vertex_sample[corner[k]]];
+      };
       *out++ =
           make_linear_patch(samples_.triangle_areas[t], at_corner(0), at_corner(1), at_corner(2));
       ++at;

@@ -66,6 +66,9 @@ class LatticePatches final : public PatchSource {
   };
 
   std::vector<Start> find_starts();  // sets size_
+  template <bool kVerticesInOrder>
+  std::span<const LinearPatch> range_of(std::size_t begin, std::size_t end,
+                                        std::span<LinearPatch> scratch) const;
   void make_patches(std::size_t t, std::uint64_t skip, std::uint64_t count, LinearPatch* out,
                     std::vector<double>& rows) const;
 
@@ -73,6 +76,7 @@ class LatticePatches final : public PatchSource {
   std::span<const double> d_;
   std::uint64_t size_ = 0;
   std::vector<Start> starts_;
+  bool vertices_in_order_;  // vertex v's sample is sample v, for every v
 };
 
 }  // namespace ncv
