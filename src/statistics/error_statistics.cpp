@@ -86,15 +86,15 @@ void find_extremes(const SampleSet& samples, std::span<const double> d, ErrorSta
 struct Moments {
   double area = 0;
   double sum = 0;     // integral of d
-  double square = 0;  // integral of (d - shift)^2
+  double square = 0;  // integral of d^2
 };
 
-Moments integrate_block(std::span<const LinearPatch> patches, double shift) {
+Moments integrate_block(std::span<const LinearPatch> patches) {
   Moments part;
   for (const LinearPatch& p : patches) {
     part.area += p.area;
     part.sum += integral(p);
-    part.square += squared_integral(p, shift);
+    part.square += squared_integral(p);
   }
   return part;
 }
@@ -155,7 +155,7 @@ FirstPass first_pass(const PatchSource& patches, const std::optional<Tolerance>&
   return reduce_patch_blocks(
       patches, zero,
       [&](std::span<const LinearPatch> block) {
-        FirstPass part{integrate_block(block, 0), std::nullopt, histogram.block(block),
+        FirstPass part{integrate_block(block), std::nullopt, histogram.block(block),
                        quantiles.block(block)};
         if (zone) part.tolerance = clip_block(block, *zone);
         return part;

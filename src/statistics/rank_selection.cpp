@@ -112,16 +112,16 @@ void select(std::vector<double>& values, std::span<const std::size_t> ranks, int
 
 // The top digits' counts, per block of kBlock values (parts[b]) and in all.
 struct TopCounts {
-  std::vector<std::vector<std::size_t>> parts;
+  std::vector<std::vector<std::uint32_t>> parts;
   std::vector<std::size_t> all;
 };
 
 TopCounts count_top_digits(std::span<const double> values) {
   const std::size_t blocks = (values.size() + kBlock - 1) / kBlock;
-  TopCounts counts{std::vector<std::vector<std::size_t>>(blocks),
+  TopCounts counts{std::vector<std::vector<std::uint32_t>>(blocks),
                    std::vector<std::size_t>(kBuckets, 0)};
   tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-    std::vector<std::size_t>& part = counts.parts[b];
+    std::vector<std::uint32_t>& part = counts.parts[b];
     part.assign(kBuckets, 0);
     const std::size_t end = std::min(values.size(), (b + 1) * kBlock);
     for (std::size_t i = b * kBlock; i < end; ++i) ++part[digit(values[i], kTopShift)];
