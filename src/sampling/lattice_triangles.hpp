@@ -45,7 +45,7 @@ void for_each_lattice_triangle(const SampleSet& samples, std::size_t t, Visit&& 
 
 // Every sub-triangle of every sampled triangle as a linear patch of the distances d (one per
 // sample), triangle by triangle in mesh order, made on demand a range at a time. The
-// statistics make them in four passes; stored, they were 32 bytes a patch of fresh pages
+// statistics make them in three passes; stored, they were 32 bytes a patch of fresh pages
 // (77 MB for the paper-scale finishing part, 92 MB for the uncut slot), which this machine's
 // kernel clears at first touch: slower than making them again (docs/PERFORMANCE.md).
 class LatticePatches final : public PatchSource {

@@ -377,7 +377,6 @@ std::vector<double> AreaQuantiles::quantiles(const PatchSource& patches,
     if (along) for_each_patch_range(patches, along);
     return result;
   }
-  const std::vector<double>& split_values = splits_;
   const double total = at_most.back();
   // Each fraction's first bracket: (splits[j - 1], splits[j]), j = 0 when the fraction lies
   // at the smallest value. Fractions sharing a bracket share its narrowing.
@@ -395,18 +394,18 @@ std::vector<double> AreaQuantiles::quantiles(const PatchSource& patches,
   std::sort(opened.begin(), opened.end());
   std::vector<Bracket> brackets(opened.size());
   for (std::size_t k = 0; k < opened.size(); ++k) {
-    brackets[k].a = split_values[opened[k] - 1];
-    brackets[k].b = split_values[opened[k]];
+    brackets[k].a = splits_[opened[k] - 1];
+    brackets[k].b = splits_[opened[k]];
   }
   narrow_all(brackets, patches, along);
   tbb::parallel_for(std::size_t{0}, fractions.size(), [&](std::size_t f) {
     const std::size_t j = first_bracket[f];
     if (j == 0) {
-      result[f] = split_values[0];
+      result[f] = splits_[0];
       return;
     }
     const double target = std::clamp(fractions[f], 0.0, 1.0) * total;
-    const std::vector<double> inside = values_inside(values_, split_values[j - 1], split_values[j]);
+    const std::vector<double> inside = values_inside(values_, splits_[j - 1], splits_[j]);
     const auto k = static_cast<std::size_t>(std::lower_bound(opened.begin(), opened.end(), j) -
                                             opened.begin());
     result[f] = quantile_in(brackets[k], inside, target);
