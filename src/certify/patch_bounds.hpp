@@ -103,8 +103,10 @@ class NearbyTriangles {
   std::span<const TriangleCorners> triangles() const { return index_.triangles(); }
   // Calls visit(t) once for every triangle listed in a cell that meets the patch's box grown
   // by `reach` whose own box comes within `reach` of the patch's (a long sliver listed in
-  // the cells but far from the patch is left out); returns false, visiting none, when that
-  // grown box spans more than `max_cells`.
+  // the cells but far from the patch is left out). When that grown box spans more than
+  // `max_cells` cells: on a reference of at most `max_cells` triangles, every triangle whose
+  // box comes within `reach` instead (a few large faces, gridded finely for the search:
+  // grid_builder.hpp), else none, returning false.
   template <class Visit>
   bool for_each(const Patch& patch, double reach, std::uint64_t max_cells, Visit&& visit) {
     BoundingBox box;
@@ -169,7 +171,14 @@ bool NearbyTriangles::for_each(const BoundingBox& box, double reach, std::uint64
     if (!(first_cell - 1 <= last) || !(last_cell + 1 >= 0)) return true;  // off the grid
     cells *= static_cast<std::uint64_t>(hi[axis] - lo[axis] + 1);
   }
-  if (cells > max_cells) return false;
+  const std::span<const TriangleCorners> triangles = index_.triangles();
+  if (cells > max_cells) {
+    if (triangles.size() > max_cells) return false;
+    for (std::uint32_t t = 0; t < triangles.size(); ++t) {
+      if (box_gap(box, BoundingBox::of(triangles[t])) <= reach) visit(t);
+    }
+    return true;
+  }
   if (++epoch_ == 0) {
     std::fill(stamps_.begin(), stamps_.end(), 0);
     epoch_ = 1;

@@ -297,7 +297,9 @@ void summarise(const BackgroundGrid& grid, std::size_t triangles, GridStatistics
 
 }  // namespace
 
-double default_cell_size(const ReferenceSurface& nominal) {
+namespace {
+
+double paper_cell_size(const ReferenceSurface& nominal) {
   const std::span<const TriangleCorners> corners = nominal.corners();
   const double area = serial_sum(corners.size(), [&](std::size_t k) {
     const TriangleCorners& t = corners[k];
@@ -308,6 +310,35 @@ double default_cell_size(const ReferenceSurface& nominal) {
   if (mean_area > 0) return std::sqrt(4.0 * mean_area / std::sqrt(3.0));
   const double diagonal = nominal.local_bounds().diagonal();
   return diagonal > 0 ? diagonal / std::cbrt(triangles) : 1.0;
+}
+
+// The smallest cell edge (to 1 %) at which the part's box spans at most `cells` cells: from
+// the box's volume over the count, an axis thinner than the cell counting as one layer (a
+// flat part's box, a straight one's), then grown past the layout's rounding up and padding.
+// Zero for a box without extent.
+double filling_cell_size(const BoundingBox& part, double cells) {
+  const Vec3 extent = part.extent();
+  std::array<double, 3> e{extent[0], extent[1], extent[2]};
+  std::sort(e.begin(), e.end());
+  double h = std::cbrt(e[0] * e[1] * e[2] / cells);
+  if (!(h > 0 && e[0] >= h)) h = std::sqrt(e[1] * e[2] / cells);
+  if (!(h > 0 && e[1] >= h)) h = e[2] / cells;
+  if (!(h > 0)) return 0;
+  const auto count = [&](double edge) {
+    const std::array<double, 3> n = cells_per_axis(part, edge);
+    return n[0] * n[1] * n[2];
+  };
+  while (count(h) > cells) h *= 1.01;
+  return h;
+}
+
+}  // namespace
+
+double default_cell_size(const ReferenceSurface& nominal) {
+  const double paper = paper_cell_size(nominal);
+  const double filling =
+      filling_cell_size(nominal.local_bounds(), static_cast<double>(kMinCellBudget));
+  return filling > 0 ? std::min(paper, filling) : paper;
 }
 
 BackgroundGrid build_background_grid(const ReferenceSurface& nominal, const GridOptions& options,

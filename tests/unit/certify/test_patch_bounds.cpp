@@ -3,6 +3,9 @@
 #include <random>
 
 #include "certify/patch_bounds.hpp"
+#include "nominal_fixtures.hpp"
+#include "search/indexed_reference.hpp"
+#include "search/search_index.hpp"
 
 namespace ncv {
 
@@ -73,6 +76,41 @@ TEST_CASE("a patch rising from a contact keeps its lower bound near the contact"
   // Without a continuous side no interval on d is known: only |d|.
   bound_from_corners(patch, reference, slack, false);
   CHECK(patch.lower() == -patch.upper_abs);
+}
+
+TEST_CASE("gathering near triangles beyond the cell limit reads a small reference whole",
+          "[patch_bounds]") {
+  // A box of 12 large triangles, gridded by default (finely: grid_builder.hpp), and the
+  // reference triangles whose boxes come within `reach` of a box around its corner.
+  const IndexedReference box = index_reference(fixtures::box({0, 0, 0}, {8, 4, 2}), "box");
+  const SearchIndex index(box);
+  NearbyTriangles nearby(index);
+  BoundingBox around;
+  around.extend(Vec3(-0.5, -0.5, -0.5));
+  around.extend(Vec3(0.5, 0.5, 0.5));
+  const auto within = [&](double reach) {
+    std::vector<std::uint32_t> expected;
+    for (std::uint32_t t = 0; t < index.triangles().size(); ++t) {
+      if (box_gap(around, BoundingBox::of(index.triangles()[t])) <= reach) expected.push_back(t);
+    }
+    return expected;
+  };
+  for (const double reach : {0.1, 1.0, 3.0}) {
+    CAPTURE(reach);
+    std::vector<std::uint32_t> seen;
+    const auto visit = [&](std::uint32_t t) { seen.push_back(t); };
+    // Through the cells (no limit), then over a limit the grown box exceeds.
+    REQUIRE(nearby.for_each(around, reach, std::uint64_t{1} << 40, visit));
+    std::sort(seen.begin(), seen.end());
+    CHECK(seen == within(reach));
+    seen.clear();
+    REQUIRE(nearby.for_each(around, reach, 12, visit));
+    CHECK(seen == within(reach));
+    // A limit below the triangle count: nothing.
+    seen.clear();
+    CHECK_FALSE(nearby.for_each(around, reach, 11, visit));
+    CHECK(seen.empty());
+  }
 }
 
 }  // namespace ncv

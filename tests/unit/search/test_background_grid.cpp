@@ -119,13 +119,76 @@ TEST_CASE("triangle-box overlap on touching and edge-separated cases", "[grid]")
   CHECK(overlap({0.1, 0.2, 0.3}, {0.1, 0.2, 0.3}, {0.1, 0.2, 0.3}));
 }
 
+// The equilateral triangle of edge 1 in the plane z = 0, cut into n^2 equilateral triangles
+// of edge 1/n.
+ncv::Mesh subdivided_equilateral(std::uint32_t n) {
+  ncv::Mesh mesh;
+  const auto index = [n](std::uint32_t i, std::uint32_t j) {
+    return i * (n + 1) - i * (i - 1) / 2 + j;  // row i holds n + 1 - i points
+  };
+  for (std::uint32_t i = 0; i <= n; ++i) {
+    for (std::uint32_t j = 0; i + j <= n; ++j) {
+      mesh.vertices.push_back({(j + 0.5 * i) / n, i * std::sqrt(3.0) / 2 / n, 0});
+    }
+  }
+  for (std::uint32_t i = 0; i < n; ++i) {
+    for (std::uint32_t j = 0; i + j < n; ++j) {
+      mesh.triangles.push_back({index(i, j), index(i, j + 1), index(i + 1, j)});
+      if (i + j + 1 < n) {
+        mesh.triangles.push_back({index(i, j + 1), index(i + 1, j + 1), index(i + 1, j)});
+      }
+    }
+  }
+  return mesh;
+}
+
 TEST_CASE("default cell size is the paper's equilateral edge", "[grid]") {
-  // A regular tetrahedron of edge 2: every face is the equilateral triangle of edge 2.
-  ncv::Mesh tetra;
-  tetra.vertices = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
-  for (Vec3& v : tetra.vertices) v = v * (1 / std::sqrt(2.0));
-  tetra.triangles = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
-  CHECK(ncv::default_cell_size(nominal_of(tetra)) == Approx(2.0).epsilon(1e-12));
+  // 65536 triangles of edge 1/256: the part's box (1 by sqrt(3)/2, flat) would hold more
+  // than the minimum budget of such cells, so the paper's edge stands.
+  CHECK(ncv::default_cell_size(nominal_of(subdivided_equilateral(256))) ==
+        Approx(1.0 / 256).epsilon(1e-9));
+}
+
+// The grid on a nominal of a few large triangles: the default cell is finer than the
+// paper's (`paper`), the grid fits the minimum cell budget as it is, and a cell 1 % finer
+// would not (the build would have to grow it).
+void check_fills_budget(const ncv::Mesh& mesh, double paper) {
+  const auto nominal = nominal_of(mesh);
+  const double h = ncv::default_cell_size(nominal);
+  CHECK(h < paper);
+  ncv::GridStatistics stats;
+  const ncv::BackgroundGrid grid = ncv::build_background_grid(nominal, {}, &stats);
+  CHECK(stats.growth_steps == 0);
+  CHECK(grid.cell_size == h);
+  CHECK(grid.cell_count() <= ncv::kMinCellBudget);
+  check_lists_complete(nominal, grid);
+  ncv::GridOptions finer;
+  finer.cell_size = 0.99 * h;
+  ncv::GridStatistics grown;
+  ncv::build_background_grid(nominal, finer, &grown);
+  CHECK(grown.growth_steps > 0);
+}
+
+TEST_CASE("default cells of a few large triangles fill the minimum cell budget", "[grid]") {
+  SECTION("a solid's box") {
+    // A regular tetrahedron of edge 2 (the paper's cell: 2).
+    ncv::Mesh tetra;
+    tetra.vertices = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+    for (Vec3& v : tetra.vertices) v = v * (1 / std::sqrt(2.0));
+    tetra.triangles = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
+    check_fills_budget(tetra, 2.0);
+    check_fills_budget(fx::box({0, 0, 0}, {40, 20, 10}), 23.2);  // mean area 2800 / 12
+  }
+  SECTION("a flat part's box counts one layer") {
+    check_fills_budget(subdivided_equilateral(2), 0.5);
+  }
+  SECTION("a straight part's box counts one row") {
+    // Zero area: the paper's cell is the box's diagonal, 3.
+    ncv::Mesh sliver;
+    sliver.vertices = {{0, 0, 0}, {3, 0, 0}, {1, 0, 0}};
+    sliver.triangles = {{0, 1, 2}};
+    check_fills_budget(sliver, 3.0);
+  }
 }
 
 TEST_CASE("grid lists every triangle in every cell it touches", "[grid]") {
