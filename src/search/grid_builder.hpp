@@ -12,7 +12,8 @@
 // few large faces (a box of 12 triangles) would otherwise get a handful of cells, each
 // listing most faces, whose boxes pass the search's prefilter: on the bench's prismatic parts
 // (12-44 triangles) 2.0-2.2 exact tests a sample against 1.1-1.2 with the finer cells, and
-// the distance step 1.26-1.34 times as long. GridOptions::cell_size overrides it.
+// the distance step 1.26-1.34 times as long. Where that finer cell would break the reference
+// bound below (long slivers), the paper's cell stands. GridOptions::cell_size overrides it.
 //
 // Memory bound, for any input (a CAD mesh mixing a few huge triangles with many tiny ones
 // makes the mean-area cell tiny against the huge ones). With T triangles the grid keeps
@@ -73,7 +74,8 @@ struct GridStatistics {
 // The paper's cell edge sqrt(4 A / sqrt 3) for the mean triangle area A (for a mesh without
 // area, the bounding-box diagonal over the cube root of the triangle count, 1 if that is 0),
 // or the smallest edge (to 1 %) at which the grid over the nominal's box has at most
-// kMinCellBudget cells, whichever is smaller.
+// kMinCellBudget cells when that is smaller and the triangles' extents alone do not exceed
+// the reference budget at it.
 double default_cell_size(const ReferenceSurface& nominal);
 
 // Throws UsageError for a cell size option that is not a finite positive number.

@@ -191,6 +191,22 @@ TEST_CASE("default cells of a few large triangles fill the minimum cell budget",
   }
 }
 
+TEST_CASE("default cells of long slivers stay the paper's", "[grid]") {
+  // 5000 slivers 100 long and 0.01 wide side by side: at the cell filling the minimum
+  // budget (about 0.39) each would touch over 250 cells, far beyond the reference budget.
+  ncv::Mesh slivers;
+  for (std::uint32_t k = 0; k < 5000; ++k) {
+    const double y = 0.01 * k;
+    slivers.vertices.push_back({0, y, 0});
+    slivers.vertices.push_back({100, y, 0});
+    slivers.vertices.push_back({0, y + 0.01, 0});
+    slivers.triangles.push_back({3 * k, 3 * k + 1, 3 * k + 2});
+  }
+  // Each of area 0.5: the paper's edge sqrt(4 * 0.5 / sqrt(3)).
+  CHECK(ncv::default_cell_size(nominal_of(slivers)) ==
+        Approx(std::sqrt(2 / std::sqrt(3.0))).epsilon(1e-9));
+}
+
 TEST_CASE("grid lists every triangle in every cell it touches", "[grid]") {
   std::mt19937_64 rng(5);
   SECTION("random soup") {
