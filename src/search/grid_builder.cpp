@@ -332,32 +332,13 @@ double filling_cell_size(const BoundingBox& part, double cells) {
   return h;
 }
 
-std::uint64_t reference_budget_of(std::uint64_t triangles) {
-  return std::max(kReferencesPerTriangle * triangles, kMinReferenceBudget);
-}
-
-// Whether cells of edge h may list the triangles within the reference budget: a triangle
-// touches at least its box's longest extent over h cells. False for long slivers (a
-// scalloped workpiece's), which then keep the paper's cell without an attempt at h.
-bool references_may_fit(std::span<const TriangleCorners> corners, double h) {
-  const double least = serial_sum(corners.size(), [&](std::size_t k) {
-    const Vec3 extent = BoundingBox::of(corners[k]).extent();
-    return std::max({extent[0], extent[1], extent[2]}) / h;
-  });
-  return least <= static_cast<double>(reference_budget_of(corners.size()));
-}
-
-double default_from_paper(const ReferenceSurface& nominal, double paper) {
-  const double filling =
-      filling_cell_size(nominal.local_bounds(), static_cast<double>(kMinCellBudget));
-  return filling > 0 && filling < paper && references_may_fit(nominal.corners(), filling) ? filling
-                                                                                          : paper;
-}
-
 }  // namespace
 
 double default_cell_size(const ReferenceSurface& nominal) {
-  return default_from_paper(nominal, paper_cell_size(nominal));
+  const double paper = paper_cell_size(nominal);
+  const double least =
+      filling_cell_size(nominal.local_bounds(), static_cast<double>(kLeastDefaultCells));
+  return least > 0 && least < paper ? least : paper;
 }
 
 BackgroundGrid build_background_grid(const ReferenceSurface& nominal, const GridOptions& options,
@@ -366,30 +347,24 @@ BackgroundGrid build_background_grid(const ReferenceSurface& nominal, const Grid
     throw UsageError(fmt::format("grid cell size {} is not a positive number", options.cell_size));
   }
   GridStatistics stats;
-  const BoundingBox& part = nominal.local_bounds();
-  const double paper = options.cell_size > 0 ? options.cell_size : paper_cell_size(nominal);
   stats.requested_cell_size =
-      options.cell_size > 0 ? options.cell_size : default_from_paper(nominal, paper);
+      options.cell_size > 0 ? options.cell_size : default_cell_size(nominal);
   const auto triangles = static_cast<std::uint64_t>(nominal.triangle_count());
   const double cell_budget =
       static_cast<double>(std::max(kCellsPerTriangle * triangles, kMinCellBudget));
-  const std::uint64_t reference_budget = reference_budget_of(triangles);
+  const std::uint64_t reference_budget =
+      std::max(kReferencesPerTriangle * triangles, kMinReferenceBudget);
+  const BoundingBox& part = nominal.local_bounds();
   // No axis can ever use more than 2^31 cells (the cell budget is below that), so a cell
   // smaller than the part's extent / 2^31 grows at once: the cell counts stay finite.
   const Vec3 extent = part.extent();
   double h =
       std::max(stats.requested_cell_size, std::max({extent[0], extent[1], extent[2]}) * 0x1p-31);
-  for (;; ++stats.growth_steps) {
+  for (;; ++stats.growth_steps, h *= kGrowth) {
     const Layout layout = layout_within_cell_budget(part, h, cell_budget, stats);
     std::optional<std::vector<ReferenceChunk>> chunks =
         touched_cells(nominal, layout, reference_budget);
-    if (!chunks) {
-      // A default finer than the paper's cell (a few large faces) is only kept when its
-      // references fit at once; otherwise the paper's cell and its growth follow, as for any
-      // mesh.
-      h = h < paper ? paper : h * kGrowth;
-      continue;
-    }
+    if (!chunks) continue;
     BackgroundGrid grid;
     grid.origin = layout.origin;
     grid.cell_size = layout.h;

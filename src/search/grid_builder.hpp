@@ -8,12 +8,13 @@
 //
 // Cell size: by default the paper's, the edge of the equilateral triangle whose area is the
 // mean nominal triangle area, but no coarser than the cell at which the part's box holds
-// kMinCellBudget cells, a grid the memory bound below allows any nominal. A CAD part of a
-// few large faces (a box of 12 triangles) would otherwise get a handful of cells, each
-// listing most faces, whose boxes pass the search's prefilter: on the bench's prismatic parts
-// (12-44 triangles) 2.0-2.2 exact tests a sample against 1.1-1.2 with the finer cells, and
-// the distance step 1.26-1.34 times as long. Where that finer cell would break the reference
-// bound below (long slivers), the paper's cell stands. GridOptions::cell_size overrides it.
+// kLeastDefaultCells cells (8 a side for a cube). A CAD part of a few large faces (a box of 12
+// triangles) would otherwise get a handful of cells, each listing most faces, whose boxes
+// pass the search's prefilter: on ncgen's prismatic parts (12-44 triangles) 2.0-2.2 exact
+// tests a sample against 1.3-1.5 with 512 cells, and each direction's distance step 1.07-1.24
+// times as long. Finer is not better: at 32768 cells the slot part's reverse search, whose samples
+// lie up to 10 mm inside the uncut workpiece, read so many empty cells that it took 2.2 times as
+// long as with the paper's 6. GridOptions::cell_size overrides it.
 //
 // Memory bound, for any input (a CAD mesh mixing a few huge triangles with many tiny ones
 // makes the mean-area cell tiny against the huge ones). With T triangles the grid keeps
@@ -53,6 +54,7 @@ inline constexpr std::uint64_t kMinCellBudget = 1 << 15;
 inline constexpr std::uint64_t kReferencesPerTriangle = 16;
 inline constexpr std::uint64_t kMinReferenceBudget = 1 << 16;
 inline constexpr double kGrowth = 1.25;
+inline constexpr std::uint64_t kLeastDefaultCells = 512;
 
 struct GridOptions {
   double cell_size = 0;  // model units; 0 = the paper's default
@@ -74,8 +76,7 @@ struct GridStatistics {
 // The paper's cell edge sqrt(4 A / sqrt 3) for the mean triangle area A (for a mesh without
 // area, the bounding-box diagonal over the cube root of the triangle count, 1 if that is 0),
 // or the smallest edge (to 1 %) at which the grid over the nominal's box has at most
-// kMinCellBudget cells when that is smaller and the triangles' extents alone do not exceed
-// the reference budget at it.
+// kLeastDefaultCells cells when that is smaller.
 double default_cell_size(const ReferenceSurface& nominal);
 
 // Throws UsageError for a cell size option that is not a finite positive number.
