@@ -142,7 +142,7 @@ double kernel_floor(const ncv::ReferenceSurface& nominal, const std::vector<ncv:
     sum += ncv::closest_point_on_triangle(points[i], corners[answers[i]]).squared_distance;
   }
   const double seconds = clock.seconds();
-  if (!(sum >= 0)) std::printf("(negative sum)\n");
+  __asm__ volatile("" : : "g"(sum));  // the sum is used, so the loop is not optimised away
   return seconds / static_cast<double>(points.size());
 }
 

@@ -171,8 +171,8 @@ bool NearbyTriangles::for_each(const BoundingBox& box, double reach, std::uint64
     if (!(first_cell - 1 <= last) || !(last_cell + 1 >= 0)) return true;  // off the grid
     cells *= static_cast<std::uint64_t>(hi[axis] - lo[axis] + 1);
   }
-  const std::span<const TriangleCorners> triangles = index_.triangles();
   if (cells > max_cells) {
+    const std::span<const TriangleCorners> triangles = index_.triangles();
     if (triangles.size() > max_cells) return false;
     for (std::uint32_t t = 0; t < triangles.size(); ++t) {
       if (box_gap(box, BoundingBox::of(triangles[t])) <= reach) visit(t);

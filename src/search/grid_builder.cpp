@@ -295,10 +295,6 @@ void summarise(const BackgroundGrid& grid, std::size_t triangles, GridStatistics
   stats.cell_size = grid.cell_size;
 }
 
-}  // namespace
-
-namespace {
-
 double paper_cell_size(const ReferenceSurface& nominal) {
   const std::span<const TriangleCorners> corners = nominal.corners();
   const double area = serial_sum(corners.size(), [&](std::size_t k) {

@@ -11,10 +11,11 @@
 // kLeastDefaultCells cells (8 a side for a cube). A CAD part of a few large faces (a box of 12
 // triangles) would otherwise get a handful of cells, each listing most faces, whose boxes
 // pass the search's prefilter: on ncgen's prismatic parts (12-44 triangles) 2.0-2.2 exact
-// tests a sample against 1.3-1.5 with 512 cells, and each direction's distance step 1.07-1.24
-// times as long. Finer is not better: at 32768 cells the slot part's reverse search, whose samples
-// lie up to 10 mm inside the uncut workpiece, read so many empty cells that it took 2.2 times as
-// long as with the paper's 6. GridOptions::cell_size overrides it.
+// tests a sample against 1.3-1.5 with 512 cells, and each direction's distance step
+// 1.07-1.24 times as long. Finer is not better: with 32768 cells the slot part's reverse
+// search, whose samples lie up to 10 mm inside the uncut workpiece, read so many empty cells
+// that it took 2.2 times as long as with the paper's 6 cells. GridOptions::cell_size
+// overrides the default.
 //
 // Memory bound, for any input (a CAD mesh mixing a few huge triangles with many tiny ones
 // makes the mean-area cell tiny against the huge ones). With T triangles the grid keeps
@@ -57,7 +58,7 @@ inline constexpr double kGrowth = 1.25;
 inline constexpr std::uint64_t kLeastDefaultCells = 512;
 
 struct GridOptions {
-  double cell_size = 0;  // model units; 0 = the paper's default
+  double cell_size = 0;  // model units; 0 = default_cell_size
 };
 
 struct GridStatistics {
