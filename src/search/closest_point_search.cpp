@@ -78,10 +78,10 @@ struct GridSearcher::Query {
   SearchCounters* counters = nullptr;
 };
 
-GridSearcher::GridSearcher(const SearchIndex& index)
+GridSearcher::GridSearcher(const SearchIndex& index, GridLevel level)
     : triangles_(index.triangles()),
-      grid_(index.grid()),
-      boxes_(index.boxes()),
+      grid_(index.grid(level)),
+      boxes_(index.boxes(level)),
       stamps_(triangles_.size(), 0) {
   const BoundingBox box = grid_.bounds();
   scale_ = std::max(max_abs(box.min), max_abs(box.max));

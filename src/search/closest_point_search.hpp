@@ -83,8 +83,9 @@ ClosestHit brute_force_closest(std::span<const TriangleCorners> triangles, Vec3 
 
 class GridSearcher {
  public:
-  // `index` is shared by the searchers of all threads and must outlive them.
-  explicit GridSearcher(const SearchIndex& index);
+  // `index` is shared by the searchers of all threads and must outlive them; the searcher
+  // reads the given level of its grid (the coarse one only where the index has it).
+  explicit GridSearcher(const SearchIndex& index, GridLevel level = GridLevel::fine);
 
   ClosestHit closest(Vec3 q, SearchCounters& counters);
   // The next query starts without the previous one's closest triangle.

@@ -7,8 +7,14 @@
 // where the grid is built or read, and shared by the searchers of every thread: the distance
 // step's cost is then per sample only (on a 1.6 M-triangle nominal the boxes are 69 MB, and
 // building them costs as much as searching a few hundred thousand samples).
+//
+// A reference of at most kMostCoarseReferences references also gets the coarse level
+// (coarse_grid.hpp) and its boxes, for queries far from it; a larger one (a workpiece indexed
+// for the reverse direction, whose samples nearly all lie near it) would pay tens of MB for it.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <span>
 
 #include "geometry/closest_point.hpp"
@@ -18,21 +24,34 @@
 
 namespace ncv {
 
+enum class GridLevel { fine, coarse };
+
+inline constexpr std::uint64_t kMostCoarseReferences = std::uint64_t{1} << 20;
+
 class SearchIndex {
  public:
   // `reference` must outlive this.
-  explicit SearchIndex(const IndexedReference& reference)
-      : reference_(&reference),
-        boxes_(build_reference_boxes(reference.surface->corners(), reference.grid)) {}
+  explicit SearchIndex(const IndexedReference& reference);
 
   const ReferenceSurface& surface() const { return *reference_->surface; }
   std::span<const TriangleCorners> triangles() const { return reference_->surface->corners(); }
   const BackgroundGrid& grid() const { return reference_->grid; }
   std::span<const BoxBlock> boxes() const { return boxes_; }
 
+  bool has_coarse_level() const { return coarse_.has_value(); }
+  // The level's grid and boxes; the coarse one only when has_coarse_level().
+  const BackgroundGrid& grid(GridLevel level) const {
+    return level == GridLevel::fine ? grid() : *coarse_;
+  }
+  std::span<const BoxBlock> boxes(GridLevel level) const {
+    return level == GridLevel::fine ? boxes() : coarse_boxes_;
+  }
+
  private:
   const IndexedReference* reference_;
   Buffer<BoxBlock> boxes_;
+  std::optional<BackgroundGrid> coarse_;
+  Buffer<BoxBlock> coarse_boxes_;
 };
 
 }  // namespace ncv

@@ -9,6 +9,7 @@
 
 #include "geometry/triangle_box_overlap.hpp"
 #include "nominal_fixtures.hpp"
+#include "search/coarse_grid.hpp"
 #include "search/grid_builder.hpp"
 #include "util/error.hpp"
 
@@ -219,6 +220,28 @@ TEST_CASE("grid lists every triangle in every cell it touches", "[grid]") {
     ncv::GridOptions options;
     options.cell_size = 0.1;
     check_lists_complete(nominal, ncv::build_background_grid(nominal, options));
+  }
+}
+
+TEST_CASE("the coarse level lists every triangle in every cell it touches", "[grid]") {
+  std::mt19937_64 rng(9);
+  const auto nominal = nominal_of(fx::random_soup(rng, 300, 0.2));
+  for (const double h : {0.05, 0.07, 0.13}) {  // odd and even fine dimensions
+    CAPTURE(h);
+    ncv::GridOptions options;
+    options.cell_size = h;
+    const ncv::BackgroundGrid fine = ncv::build_background_grid(nominal, options);
+    const ncv::BackgroundGrid coarse = ncv::coarsen(fine);
+    CHECK(coarse.cell_size == 2 * fine.cell_size);
+    for (int axis = 0; axis < 3; ++axis) {
+      CHECK(coarse.dims[axis] == (fine.dims[axis] + 1) / 2);
+      // Every coarse bound is a fine one, to the bit.
+      for (std::int64_t i = 0; i <= coarse.dims[axis]; ++i) {
+        REQUIRE(coarse.cell_bound(axis, i) == fine.cell_bound(axis, 2 * i));
+      }
+    }
+    coarse.validate(nominal, "coarse");
+    check_lists_complete(nominal, coarse);
   }
 }
 
