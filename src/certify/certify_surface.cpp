@@ -13,7 +13,7 @@
 #include "certify/triangle_cover.hpp"
 #include "sampling/lattice_triangles.hpp"
 #include "sampling/sample_normals.hpp"
-#include "search/closest_point_search.hpp"
+#include "search/sample_searcher.hpp"
 #include "util/ordered_reduce.hpp"
 
 namespace ncv {
@@ -105,7 +105,7 @@ class PointProbe {
   }
 
  private:
-  GridSearcher search_;
+  SampleSearcher search_;
   const SideRule& side_;
   SearchCounters counters_;
 };

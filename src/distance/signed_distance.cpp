@@ -14,6 +14,7 @@
 
 #include "distance/side_rule.hpp"
 #include "search/closest_point_search.hpp"
+#include "search/sample_searcher.hpp"
 #include "util/error.hpp"
 
 namespace ncv {
@@ -46,19 +47,10 @@ void check_inputs(std::span<const Vec3> points, std::span<const Vec3> sample_nor
   }
 }
 
-// A sample is searched over the coarse level (coarse_grid.hpp) when the sample before it lay
-// farther from the nominal than this many fine cells: its ball then likely leaves its fine
-// cell, and meets fewer coarse cells. Roughing (1.9 mm cells, samples up to 6 mm off): the
-// distance step 0.287 -> 0.236 s on one thread (an eighth of a cell), 0.251 s (a quarter),
-// 0.245 s (always coarse); the finishing parts the same within the noise from an eighth up,
-// 10 % slower always coarse.
-constexpr double kFarFromCells = 0.125;
-
-// Everything one thread needs: a grid searcher (it owns the per-triangle stamps) and its
-// share of the counters.
+// Everything one thread needs: a sample searcher (its grid searchers own the per-triangle
+// stamps) and its share of the counters.
 struct Worker {
-  std::optional<GridSearcher> search;
-  std::optional<GridSearcher> far;  // over the coarse level, where the index has one
+  std::optional<SampleSearcher> search;
   SearchCounters counters;
 };
 
@@ -71,32 +63,14 @@ class SignedDistanceJob {
 
   void run(DistanceField& field, std::size_t begin, std::size_t end) {
     Worker& worker = workers_.local();
-    if (grid_ && !worker.search) {
-      worker.search.emplace(*grid_);
-      if (grid_->has_coarse_level()) worker.far.emplace(*grid_, GridLevel::coarse);
-    }
+    if (grid_ && !worker.search) worker.search.emplace(*grid_);
     const bool paper = side_.method() == SignMethod::paper;
-    const double far_from = grid_ ? kFarFromCells * grid_->grid().cell_size : 0;
-    // The previous sample's closest triangle and distance, in this block only.
-    std::uint32_t hint = kNoTriangle;
-    double previous = 0;
     for (std::size_t i = begin; i < end; ++i) {
-      if (i % kDistanceBlockSize == 0) hint = kNoTriangle, previous = 0;
+      if (worker.search && i % kDistanceBlockSize == 0) worker.search->forget();
       const Vec3 p = nominal_.to_local(points_[i]);
-      ClosestHit hit;
-      if (worker.search) {
-        GridSearcher& search = worker.far && previous > far_from ? *worker.far : *worker.search;
-        if (hint == kNoTriangle) {
-          search.forget_hint();
-        } else {
-          search.set_hint(hint);
-        }
-        hit = search.closest(p, worker.counters);
-      } else {
-        hit = brute_force_closest(nominal_.corners(), p, worker.counters);
-      }
-      hint = hit.triangle;
-      previous = std::sqrt(hit.squared_distance);
+      const ClosestHit hit = worker.search
+                                 ? worker.search->closest(p, worker.counters)
+                                 : brute_force_closest(nominal_.corners(), p, worker.counters);
       field.distance[i] = side_.signed_value(p, hit, paper ? normals_[i] : Vec3(0, 0, 0));
       field.closest_face[i] = hit.triangle;
     }
