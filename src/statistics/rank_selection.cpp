@@ -39,18 +39,22 @@ std::size_t digit(double v, int shift) {
 
 constexpr int kTopShift = 64 - kDigitBits;
 
-// Where each wanted rank lies: its bucket's number among the wanted buckets, and its rank
-// within that bucket. slot[bucket] numbers the wanted buckets (kNotWanted for the others).
+// Where each wanted rank lies: its rank within its bucket; the wanted buckets numbered w
+// (slot[bucket], kNotWanted for the others), their ranks first_rank[w] .. first_rank[w + 1]
+// (both ascend, so each bucket's ranks are consecutive).
 struct RankPlaces {
   std::vector<std::uint32_t> slot = std::vector<std::uint32_t>(kBuckets, kNotWanted);
   std::vector<std::size_t> wanted_bucket;
-  std::vector<std::uint32_t> rank_bucket;
+  std::vector<std::size_t> first_rank;
   std::vector<std::size_t> rank_within;
+
+  std::span<const std::size_t> ranks_of(std::size_t w) const {
+    return std::span(rank_within).subspan(first_rank[w], first_rank[w + 1] - first_rank[w]);
+  }
 };
 
 RankPlaces place_ranks(const std::vector<std::size_t>& counts, std::span<const std::size_t> ranks) {
   RankPlaces places;
-  places.rank_bucket.resize(ranks.size());
   places.rank_within.resize(ranks.size());
   std::size_t below = 0, k = 0;
   for (std::size_t r = 0; r < ranks.size(); ++r) {
@@ -58,10 +62,11 @@ RankPlaces place_ranks(const std::vector<std::size_t>& counts, std::span<const s
     if (places.slot[k] == kNotWanted) {
       places.slot[k] = static_cast<std::uint32_t>(places.wanted_bucket.size());
       places.wanted_bucket.push_back(k);
+      places.first_rank.push_back(r);
     }
-    places.rank_bucket[r] = places.slot[k];
     places.rank_within[r] = ranks[r] - below;
   }
+  places.first_rank.push_back(ranks.size());
   return places;
 }
 
@@ -100,13 +105,8 @@ void select(std::vector<double>& values, std::span<const std::size_t> ranks, int
     const std::uint32_t w = places.slot[digit(v, shift)];
     if (w != kNotWanted) wanted[w].push_back(v);
   }
-  for (std::size_t r = 0; r < ranks.size();) {
-    const std::uint32_t w = places.rank_bucket[r];
-    std::size_t end = r;
-    while (end < ranks.size() && places.rank_bucket[end] == w) ++end;
-    select(wanted[w], std::span(places.rank_within).subspan(r, end - r), shift - kDigitBits,
-           result + r);
-    r = end;
+  for (std::size_t w = 0; w < wanted.size(); ++w) {
+    select(wanted[w], places.ranks_of(w), shift - kDigitBits, result + places.first_rank[w]);
   }
 }
 
@@ -168,13 +168,10 @@ std::vector<double> values_at_ranks(std::span<const double> values,
   const RankPlaces places = place_ranks(counts.all, ranks);
   std::vector<std::vector<double>> gathered = gather_wanted(values, counts, places);
   std::vector<double> result(ranks.size());
-  // Each wanted bucket's ranks are consecutive (both ascend): selected side by side.
-  std::vector<std::size_t> first_rank(gathered.size() + 1, ranks.size());
-  for (std::size_t r = ranks.size(); r-- > 0;) first_rank[places.rank_bucket[r]] = r;
+  // The wanted buckets selected in side by side.
   tbb::parallel_for(std::size_t{0}, gathered.size(), [&](std::size_t w) {
-    const std::size_t begin = first_rank[w], end = first_rank[w + 1];
-    select(gathered[w], std::span(places.rank_within).subspan(begin, end - begin),
-           kTopShift - kDigitBits, result.data() + begin);
+    select(gathered[w], places.ranks_of(w), kTopShift - kDigitBits,
+           result.data() + places.first_rank[w]);
   });
   return result;
 }
