@@ -90,7 +90,8 @@ class GridSearcher {
   ClosestHit closest(Vec3 q, SearchCounters& counters);
   // The next query starts without the previous one's closest triangle.
   void forget_hint() { hint_ = kNoTriangle; }
-  // The next query starts with triangle t instead (a valid index; the result is the same).
+  // The next query starts with triangle t instead (a valid index, the result is the same; or
+  // kNoTriangle, as forget_hint()).
   void set_hint(std::uint32_t t) { hint_ = t; }
 
  private:

@@ -1,24 +1,25 @@
 #include "search/sample_searcher.hpp"
 
-#include <cmath>
-
 namespace ncv {
+namespace {
 
-SampleSearcher::SampleSearcher(const SearchIndex& index)
-    : fine_(index), far_from_(kFarFromCells * index.grid().cell_size) {
+// How far, in grid cells, the previous query must lie for the coarse level (the header).
+constexpr double kFarFromCells = 0.125;
+
+}  // namespace
+
+SampleSearcher::SampleSearcher(const SearchIndex& index) : fine_(index) {
+  const double far_from = kFarFromCells * index.grid().cell_size;
+  far_from_squared_ = far_from * far_from;
   if (index.has_coarse_level()) coarse_.emplace(index, GridLevel::coarse);
 }
 
 ClosestHit SampleSearcher::closest(Vec3 q, SearchCounters& counters) {
-  GridSearcher& search = coarse_ && previous_ > far_from_ ? *coarse_ : fine_;
-  if (hint_ == kNoTriangle) {
-    search.forget_hint();
-  } else {
-    search.set_hint(hint_);
-  }
+  GridSearcher& search = coarse_ && previous_squared_ > far_from_squared_ ? *coarse_ : fine_;
+  search.set_hint(hint_);
   const ClosestHit hit = search.closest(q, counters);
   hint_ = hit.triangle;
-  previous_ = std::sqrt(hit.squared_distance);
+  previous_squared_ = hit.squared_distance;
   return hit;
 }
 

@@ -17,8 +17,6 @@
 
 namespace ncv {
 
-inline constexpr double kFarFromCells = 0.125;
-
 class SampleSearcher {
  public:
   // `index` must outlive this.
@@ -28,15 +26,15 @@ class SampleSearcher {
   // The next query starts afresh: no hint, the grid's own level.
   void forget() {
     hint_ = kNoTriangle;
-    previous_ = 0;
+    previous_squared_ = 0;
   }
 
  private:
   GridSearcher fine_;
   std::optional<GridSearcher> coarse_;
-  double far_from_;
+  double far_from_squared_;
   std::uint32_t hint_ = kNoTriangle;
-  double previous_ = 0;  // the previous query's distance
+  double previous_squared_ = 0;  // the previous query's squared distance
 };
 
 }  // namespace ncv
