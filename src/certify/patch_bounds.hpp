@@ -105,8 +105,8 @@ class NearbyTriangles {
   // by `reach` whose own box comes within `reach` of the patch's (a long sliver listed in
   // the cells but far from the patch is left out). When that grown box spans more than
   // `max_cells` cells: on a reference of at most `max_cells` triangles, every triangle whose
-  // box comes within `reach` instead (a few large faces, gridded finely for the search:
-  // grid_builder.hpp), else none, returning false.
+  // box (the same search_box) comes within `reach` instead (a few large faces, gridded
+  // finely for the search: grid_builder.hpp), else none, returning false.
   template <class Visit>
   bool for_each(const Patch& patch, double reach, std::uint64_t max_cells, Visit&& visit) {
     BoundingBox box;
@@ -175,7 +175,7 @@ bool NearbyTriangles::for_each(const BoundingBox& box, double reach, std::uint64
     const std::span<const TriangleCorners> triangles = index_.triangles();
     if (triangles.size() > max_cells) return false;
     for (std::uint32_t t = 0; t < triangles.size(); ++t) {
-      if (box_gap(box, BoundingBox::of(triangles[t])) <= reach) visit(t);
+      if (box_gap(box, search_box(triangles[t])) <= reach) visit(t);
     }
     return true;
   }

@@ -38,10 +38,11 @@ struct FloatBox {
 };
 
 FloatBox float_box(const TriangleCorners& c) {
+  const BoundingBox rounded = search_box(c);  // float values already: converted exactly
   FloatBox box;
   for (int axis = 0; axis < 3; ++axis) {
-    box.lo[axis] = float_at_or_below(std::min({c[0][axis], c[1][axis], c[2][axis]}));
-    box.hi[axis] = float_at_or_above(std::max({c[0][axis], c[1][axis], c[2][axis]}));
+    box.lo[axis] = static_cast<float>(rounded.min[axis]);
+    box.hi[axis] = static_cast<float>(rounded.max[axis]);
   }
   return box;
 }
@@ -71,6 +72,15 @@ void fill_blocks(std::span<const FloatBox> triangle_boxes, const BackgroundGrid&
 // gather the boxes (a third of the corners' size) by reference. Rounding per reference
 // read the corners in cell order, which missed the cache about once per reference on a
 // large nominal.
+BoundingBox search_box(const TriangleCorners& c) {
+  BoundingBox box;
+  for (int axis = 0; axis < 3; ++axis) {
+    box.min[axis] = float_at_or_below(std::min({c[0][axis], c[1][axis], c[2][axis]}));
+    box.max[axis] = float_at_or_above(std::max({c[0][axis], c[1][axis], c[2][axis]}));
+  }
+  return box;
+}
+
 Buffer<BoxBlock> build_reference_boxes(std::span<const TriangleCorners> triangles,
                                        const BackgroundGrid& grid) {
   Buffer<FloatBox> triangle_boxes(triangles.size());

@@ -13,6 +13,7 @@
 #include <span>
 #include <vector>
 
+#include "geometry/bounding_box.hpp"
 #include "geometry/closest_point.hpp"
 #include "search/background_grid.hpp"
 #include "util/buffer.hpp"
@@ -32,6 +33,10 @@ struct alignas(16) BoxBlock {
 // outward when rounding went inward.
 float float_at_or_below(double x);
 float float_at_or_above(double x);
+
+// A triangle's box as the search stores it: its corners' bounds rounded outward to floats, so
+// it holds the triangle and no point of the triangle is nearer than it.
+BoundingBox search_box(const TriangleCorners& corners);
 
 // Built in parallel; `grid` must have been built for (or validated against) `triangles`.
 Buffer<BoxBlock> build_reference_boxes(std::span<const TriangleCorners> triangles,
