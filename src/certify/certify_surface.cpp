@@ -442,8 +442,8 @@ class Certifier {
             const auto exact = [&] { return lattice_cover(t); };
             const auto [high, low] = sample_extremes(t);
             // The covering radius is at most the longest edge over sqrt(3) (the circumradius of
-            // an acute triangle, whose largest angle is at least 60 degrees; half the longest
-            // edge otherwise): tried first, squared (no root, no division on the way most
+            // an acute triangle, whose largest angle is at least 60 degrees; at most half the
+            // longest edge otherwise): tried first, squared (no root, no division on the way most
             // triangles take), with margins for the rounding: one slack beyond the one the
             // scaled radius carries, far above the few ulps the margin c itself may be off.
             const double longest_squared =
@@ -685,8 +685,8 @@ class Certifier {
   }
 
   // How a patch is split: an obtuse one in two at the middle of its longest edge (its
-  // covering radius is half that edge, which the halves' are at most half of, or their
-  // other edges', for one point measured), any other into four at its edge midpoints
+  // covering radius is at most half that edge, the halves' at most half of that or of their
+  // other edges, for one point measured), any other into four at its edge midpoints
   // (three points): the slivers a decimated mesh has along its scallops take fewer points.
   // Returns the longest edge's first corner for a bisection, -1 for four.
   static int bisected_edge(const Patch& p) {

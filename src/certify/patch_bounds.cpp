@@ -159,13 +159,41 @@ double convex_upper_abs(const Patch& patch, std::span<const TriangleCorners> ref
 
 }  // namespace
 
+namespace {
+
+// The covering radius of a triangle whose angle at `apex` is not acute, across from the edge
+// pq (docs/CERTIFICATION.md "Bounds on one patch"): the farthest a point of it lies from every
+// corner is where the perpendicular bisector of an edge at the apex meets pq, at
+// |e apex|^2 |pq| / (2 (apex - e) . (f - e)) from that edge's end e (f the other end), which is
+// at most half of pq. Half of pq where a product is too close to zero for its rounding.
+double obtuse_covering_radius(Vec3 p, Vec3 q, Vec3 apex) {
+  const double base = norm(q - p);
+  const auto from_end = [&](Vec3 e, Vec3 f) {
+    const double side = squared_norm(apex - e);
+    if (side == 0) return 0.0;  // the apex on this end: the other end's bisector decides
+    const double along = dot(apex - e, f - e);
+    // Rounding leaves the product within 4 units in the last place of |apex - e| |pq|; above
+    // a millionth of it, the quotient is within 1e-9 of its value.
+    if (!(along > 1e-6 * std::sqrt(side) * base)) return std::numeric_limits<double>::infinity();
+    return side * base / (2 * along);
+  };
+  const double farthest = std::max(from_end(p, q), from_end(q, p));
+  return std::min(0.5 * base, farthest * (1 + 1e-8));
+}
+
+}  // namespace
+
 double covering_radius(Vec3 a, Vec3 b, Vec3 c) {
   const double ab = squared_norm(b - a), bc = squared_norm(c - b), ca = squared_norm(a - c);
   const double longest = std::max({ab, bc, ca});
   // Acute: each squared edge is less than the sum of the other two.
   const bool acute = ab < bc + ca && bc < ca + ab && ca < ab + bc;
   const double twice_area = norm(cross(b - a, c - a));
-  if (!acute || !(twice_area > 0)) return 0.5 * std::sqrt(longest);
+  if (!acute || !(twice_area > 0)) {
+    if (longest == ab) return obtuse_covering_radius(a, b, c);
+    if (longest == bc) return obtuse_covering_radius(b, c, a);
+    return obtuse_covering_radius(c, a, b);
+  }
   const double circumradius = std::sqrt(ab * bc * ca) / (2 * twice_area);
   // Rounding can only make an almost-right triangle look acute; the circumradius is then
   // half its longest edge to within rounding, and the larger of the two is safe.

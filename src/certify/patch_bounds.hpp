@@ -78,7 +78,9 @@ ContactPrism contact_prism(double width, double slack);
 void take_side(Patch& patch, int side, double reached);
 
 // The largest distance from a point of triangle abc to the nearest of its corners: the
-// circumradius when the triangle is acute, half its longest edge otherwise.
+// circumradius when the triangle is acute; otherwise the larger distance from an end of the
+// longest edge to where the perpendicular bisector of the edge between that end and the third
+// corner meets it, at most half the longest edge (docs/CERTIFICATION.md "Bounds on one patch").
 double covering_radius(Vec3 a, Vec3 b, Vec3 c);
 
 // What refinement aims at: every patch's upper bound at most `upper` and its lower bound at
