@@ -376,6 +376,7 @@ std::optional<double> covering_bound(const Patch& patch, NearbyTriangles& nearby
                            cover.push_back(t);
                            highest = std::max(highest, h);
                          }
+                         return cover.size() <= kMaxCoveringTriangles;
                        }) ||
       cover.empty() || cover.size() > kMaxCoveringTriangles) {
     return std::nullopt;
@@ -400,7 +401,10 @@ double nearby_upper_abs(const Patch& patch, NearbyTriangles& nearby, double widt
   const double reach = largest + 0.25 * covering_radius(a, b, c) + 8 * slack;
   double best = patch.upper_abs;
   std::vector<std::uint32_t> near;
-  nearby.for_each(patch, reach, kMaxNearbyCells, [&](std::uint32_t t) { near.push_back(t); });
+  nearby.for_each(patch, reach, kMaxNearbyCells, [&](std::uint32_t t) {
+    near.push_back(t);
+    return near.size() <= kMaxSingleCandidates;
+  });
   // Among many small triangles none is near all three corners: the covering below is for that.
   if (near.size() <= kMaxSingleCandidates) {
     for (const std::uint32_t t : near) {
@@ -465,12 +469,12 @@ void prove_side(Patch& patch, NearbyTriangles& nearby, double slack) {
   for (const Vec3& p : corners) box.extend(p);
   std::size_t measured = 0;
   const bool scanned = nearby.for_each(patch, reach, kMaxNearbyCells, [&](std::uint32_t t) {
-    if (least <= 0 || measured > kMaxSideCandidates) return;
     BoundingBox triangle_box;
     for (const Vec3& p : reference[t]) triangle_box.extend(p);
-    if (box_gap(box, triangle_box) >= least) return;
+    if (box_gap(box, triangle_box) >= least) return true;
     ++measured;
     least = std::min(least, triangle_distance_lower_bound(corners, reference[t], slack));
+    return least > 0 && measured <= kMaxSideCandidates;
   });
   if (!scanned || measured > kMaxSideCandidates || !(least > 0)) return;
   patch.side = side;
@@ -539,7 +543,10 @@ void prove_side_by_prism(Patch& patch, NearbyTriangles& nearby, const SideWitnes
   if (normals.empty() || !(shrunk.radius > prism.margin)) return;
   std::vector<std::uint32_t> near;
   if (!nearby.for_each(patch, prism.high + 2 * slack, kMaxNearbyCells,
-                       [&](std::uint32_t t) { near.push_back(t); }) ||
+                       [&](std::uint32_t t) {
+                         near.push_back(t);
+                         return near.size() <= kMaxPrismTriangles;
+                       }) ||
       near.size() > kMaxPrismTriangles) {
     return;
   }

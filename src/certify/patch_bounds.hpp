@@ -19,6 +19,7 @@
 #include <functional>
 #include <limits>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "geometry/bounding_box.hpp"
@@ -108,7 +109,9 @@ class NearbyTriangles {
   // the cells but far from the patch is left out). When that grown box spans more than
   // `max_cells` cells: on a reference of at most `max_cells` triangles, every triangle whose
   // box (the same search_box) comes within `reach` instead (a few large faces, gridded
-  // finely for the search: grid_builder.hpp), else none, returning false.
+  // finely for the search: grid_builder.hpp), else none, returning false. A visit that
+  // returns false (a caller whose cap is exceeded, for which the rest would change nothing)
+  // stops the scan, which then returns false too.
   template <class Visit>
   bool for_each(const Patch& patch, double reach, std::uint64_t max_cells, Visit&& visit) {
     BoundingBox box;
@@ -154,6 +157,17 @@ int free_prism_side(std::span<const TriangleCorners> reference, std::span<const 
 void bound_by_nearby(Patch& patch, NearbyTriangles& nearby, const SideWitness& witness,
                      const NearbyTargets& targets, double slack, bool side_is_continuous);
 
+// Visits t; false when the visit asks to stop.
+template <class Visit>
+bool goes_on(Visit& visit, std::uint32_t t) {
+  if constexpr (std::is_same_v<std::invoke_result_t<Visit&, std::uint32_t>, bool>) {
+    return visit(t);
+  } else {
+    visit(t);
+    return true;
+  }
+}
+
 template <class Visit>
 bool NearbyTriangles::for_each(const BoundingBox& box, double reach, std::uint64_t max_cells,
                                Visit&& visit) {
@@ -162,22 +176,19 @@ bool NearbyTriangles::for_each(const BoundingBox& box, double reach, std::uint64
   std::uint64_t cells = 1;
   const std::span<const BoxBlock> boxes = index_.boxes();
   for (int axis = 0; axis < 3; ++axis) {
-    const double low = box.min[axis], high = box.max[axis];
-    const double last = static_cast<double>(grid.dims[axis]) - 1;
-    const double first_cell = std::floor((low - reach - grid.origin[axis]) / grid.cell_size);
-    const double last_cell = std::floor((high + reach - grid.origin[axis]) / grid.cell_size);
-    // Cells are closed: a triangle on a shared face is listed in both, and a box that ends
-    // on a face reaches the next cell by rounding at most; one cell more on each side covers it.
-    lo[axis] = static_cast<std::int64_t>(std::clamp(first_cell - 1, 0.0, last));
-    hi[axis] = static_cast<std::int64_t>(std::clamp(last_cell + 1, 0.0, last));
-    if (!(first_cell - 1 <= last) || !(last_cell + 1 >= 0)) return true;  // off the grid
+    // The grown box rounded outward, and the cells that meet it by the grid's own bounds: a
+    // triangle within reach has a point in it, which lies in one of them, and the builder
+    // lists a triangle in every cell it touches (a point on a shared face: in both).
+    const double low = std::nextafter(box.min[axis] - reach, -INFINITY);
+    const double high = std::nextafter(box.max[axis] + reach, INFINITY);
+    if (!grid.cells_meeting(axis, low, high, lo[axis], hi[axis])) return true;  // off the grid
     cells *= static_cast<std::uint64_t>(hi[axis] - lo[axis] + 1);
   }
   if (cells > max_cells) {
     const std::span<const TriangleCorners> triangles = index_.triangles();
     if (triangles.size() > max_cells) return false;
     for (std::uint32_t t = 0; t < triangles.size(); ++t) {
-      if (box_gap(box, search_box(triangles[t])) <= reach) visit(t);
+      if (box_gap(box, search_box(triangles[t])) <= reach && !goes_on(visit, t)) return false;
     }
     return true;
   }
@@ -203,7 +214,7 @@ bool NearbyTriangles::for_each(const BoundingBox& box, double reach, std::uint64
           triangle_box.min = Vec3(block.lo[0][lane], block.lo[1][lane], block.lo[2][lane]);
           triangle_box.max = Vec3(block.hi[0][lane], block.hi[1][lane], block.hi[2][lane]);
           if (box_gap(box, triangle_box) > reach) continue;
-          visit(t);
+          if (!goes_on(visit, t)) return false;
         }
       }
     }

@@ -76,6 +76,25 @@ std::optional<std::uint64_t> BackgroundGrid::checked_cell_count(
   return cells;
 }
 
+bool BackgroundGrid::cells_meeting(int axis, double low, double high, std::int64_t& first,
+                                   std::int64_t& last) const {
+  const std::int64_t end = dims[axis];
+  if (!(low <= cell_bound(axis, end)) || !(high >= cell_bound(axis, 0))) return false;
+  // The quotients are within a cell of the answer; the bounds themselves decide.
+  const auto estimate = [&](double x) {
+    const double index = std::floor((x - origin[axis]) / cell_size);
+    return static_cast<std::int64_t>(std::clamp(index, 0.0, static_cast<double>(end - 1)));
+  };
+  first = estimate(low);
+  last = estimate(high);
+  while (first > 0 && cell_bound(axis, first) > low) --first;
+  while (first < end - 1 && cell_bound(axis, first + 1) <= low) ++first;
+  while (last < end - 1 && cell_bound(axis, last + 1) < high) ++last;
+  while (last > first && cell_bound(axis, last) >= high) --last;
+  last = std::max(last, first);  // a point on a face: the cell above it
+  return true;
+}
+
 BoundingBox BackgroundGrid::bounds() const {
   BoundingBox box;
   box.min = origin;

@@ -50,6 +50,14 @@ struct BackgroundGrid {
   }
   BoundingBox bounds() const;
 
+  // The fewest consecutive cells along `axis` (by cell_bound, as the builder placed the
+  // triangles) that hold [low, high]: from the last whose lower face is at or below low to
+  // the first whose upper face is at or above high (the grid's first or last cell for an
+  // interval beyond it). A point on a face between two cells lies in both, and the builder
+  // lists a triangle through it in both. False when the interval misses the grid.
+  bool cells_meeting(int axis, double low, double high, std::int64_t& first,
+                     std::int64_t& last) const;
+
   // Checks everything the search relies on to stay in bounds, so that a grid read from an
   // untrusted file cannot crash or hang it: finite origin, finite positive cell size, no
   // zero dimension, offsets sized cells + 1, starting at 0, monotone, ending at the list

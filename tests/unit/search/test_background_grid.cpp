@@ -424,3 +424,52 @@ TEST_CASE("grid validation rejects every kind of corruption", "[grid]") {
       "a triangle in no cell");
   CHECK_THROWS_AS(good.validate(199, "grid.bin"), ncv::InputError);
 }
+
+TEST_CASE("the cells meeting an interval are those whose closed extent meets it", "[grid]") {
+  // An origin and a cell size whose bounds round (0.1 is not a binary fraction), intervals
+  // ending on cell faces, within rounding of them, inside one cell, and beyond the grid.
+  ncv::BackgroundGrid grid;
+  grid.origin = Vec3(-3.7, 0.1, 1e3);
+  grid.cell_size = 0.1;
+  grid.dims = {37, 5, 1};
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> face(-3, 40);
+  std::uniform_real_distribution<double> u(-0.5, 4.5);
+  for (int trial = 0; trial < 20000; ++trial) {
+    const int axis = trial % 3;
+    const std::int64_t end = grid.dims[axis];
+    double low = 0, high = 0;
+    switch (trial % 4) {
+      case 0:  // on faces
+        low = grid.cell_bound(axis, face(rng));
+        high = grid.cell_bound(axis, face(rng));
+        break;
+      case 1:  // a step off faces
+        low = std::nextafter(grid.cell_bound(axis, face(rng)), trial % 8 < 4 ? -1e9 : 1e9);
+        high = std::nextafter(grid.cell_bound(axis, face(rng)), trial % 8 < 4 ? 1e9 : -1e9);
+        break;
+      default:
+        low = grid.origin[axis] + u(rng) * static_cast<double>(end) * grid.cell_size / 4;
+        high = low + std::fabs(u(rng)) * grid.cell_size;
+    }
+    if (low > high) std::swap(low, high);
+    // The last cell starting at or below low, the first ending at or above high.
+    std::int64_t want_first = 0, want_last = end - 1;
+    for (std::int64_t i = 0; i < end; ++i) {
+      if (grid.cell_bound(axis, i) <= low) want_first = i;
+    }
+    for (std::int64_t i = end - 1; i >= 0; --i) {
+      if (grid.cell_bound(axis, i + 1) >= high) want_last = i;
+    }
+    want_last = std::max(want_last, want_first);
+    const bool on_grid = low <= grid.cell_bound(axis, end) && high >= grid.cell_bound(axis, 0);
+    std::int64_t first = -1, last = -1;
+    REQUIRE(grid.cells_meeting(axis, low, high, first, last) == on_grid);
+    if (!on_grid) continue;
+    CHECK(first == want_first);
+    CHECK(last == want_last);
+    // They hold the interval, each of them meets it.
+    CHECK(grid.cell_bound(axis, first) <= std::max(low, grid.cell_bound(axis, 0)));
+    CHECK(grid.cell_bound(axis, last + 1) >= std::min(high, grid.cell_bound(axis, end)));
+  }
+}
