@@ -160,14 +160,17 @@ class Certifier {
   bool is_held(std::uint64_t s) const {
     return s >= samples_.first_sample && s - samples_.first_sample < samples_.sample_count();
   }
-  bool is_open(double upper, double lower) const {
-    return upper > measured_.max + width_ || lower < measured_.min - width_;
+  // Whether bounds leave a patch open against measured extremes widened by the width asked.
+  bool is_open(double upper, double lower, const Extremes& measured) const {
+    return upper > measured.max + width_ || lower < measured.min - width_;
   }
+  bool is_open(double upper, double lower) const { return is_open(upper, lower, measured_); }
   bool is_open(const Patch& p) const { return is_open(p.upper(), p.lower()); }
-  // What settles a patch now: the measured extremes widened by the width asked.
-  NearbyTargets targets_now() const {
-    return {measured_.max + width_, measured_.min - width_, width_};
+  // What settles a patch: the measured extremes widened by the width asked.
+  NearbyTargets targets_of(const Extremes& measured) const {
+    return {measured.max + width_, measured.min - width_, width_};
   }
+  NearbyTargets targets_now() const { return targets_of(measured_); }
 
   // Whether this set holds sampled triangle t's anchor sample, and so bounds its patches. A
   // test per triangle where the passes meet it, not a list made first: listing the finishing
@@ -379,14 +382,16 @@ class Certifier {
   }
 
   // A lattice patch bounded from its corners (and by its triangle's cover when it has one, which
-  // is tried first, as it settles most of its triangle's patches): folded when that settles it,
-  // else returned.
+  // is tried first, as it settles most of its triangle's patches): folded when that settles it
+  // against the extremes `measured` (the measured ones, or more), else returned.
   std::optional<Patch> bound_patch(std::uint32_t t, std::uint64_t a, std::uint64_t b,
                                    std::uint64_t c, double radius, BoundFold& fold,
+                                   const Extremes& measured,
                                    const TriangleCover* cover = nullptr) const {
+    const auto open = [&](const Patch& p) { return is_open(p.upper(), p.lower(), measured); };
     ++fold.patches;
     const CheapBounds cheap = bound_cheaply(a, b, c, radius);
-    if (!is_open(cheap.upper, cheap.lower)) {
+    if (!is_open(cheap.upper, cheap.lower, measured)) {
       // Where only rarely a new extreme: its place is worked out then.
       if (cheap.upper > fold.bounds.max || cheap.lower < fold.bounds.min) {
         const Vec3 centre = global_centre(a, b, c);
@@ -401,13 +406,13 @@ class Certifier {
     patch.high = cheap.upper;
     patch.low = cheap.lower;
     if (cover) cover->bound(patch);
-    if (is_open(patch)) {
-      const NearbyTargets targets = targets_now();
+    if (open(patch)) {
+      const NearbyTargets targets = targets_of(measured);
       bound_from_corners(patch, index_.triangles(), slack_, continuous_, &targets);
       patch.upper_abs = std::min(patch.upper_abs, cheap.upper_abs);
       if (cover) cover->bound(patch);
     }
-    if (is_open(patch)) return patch;
+    if (open(patch)) return patch;
     fold.add(patch, false, surface_.origin());
     return std::nullopt;
   }
@@ -485,7 +490,8 @@ class Certifier {
             }
             for_each_lattice_triangle(
                 samples_, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
-                  if (std::optional<Patch> patch = bound_patch(t, a, b, c, cover, part.fold)) {
+                  if (std::optional<Patch> patch =
+                          bound_patch(t, a, b, c, cover, part.fold, measured_)) {
                     part.open.push_back(*patch);
                   }
                 });
@@ -554,14 +560,19 @@ class Certifier {
     const std::optional<TriangleCover> cover =
         cover_of(t, deferred.largest, deferred.open, max_points);
     const double radius = lattice_cover(t);
+    // The points the cover asks for first: their values are measured extremes by the time the
+    // patches are folded (bound_by_triangle), so a patch they settle is settled here, and
+    // neither bounded further nor kept (the box nominal's scalloped faces: 650 k patches).
     Covered out;
+    if (cover) out.measured = measure_for(*cover, t);
+    Extremes against = measured_;
+    for (const PatchCorner& m : out.measured) against.add(m.d, m.point);
     for_each_lattice_triangle(samples_, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
       if (std::optional<Patch> patch =
-              bound_patch(t, a, b, c, radius, out.fold, cover ? &*cover : nullptr)) {
+              bound_patch(t, a, b, c, radius, out.fold, against, cover ? &*cover : nullptr)) {
         out.open.push_back(*patch);
       }
     });
-    if (cover) out.measured = measure_for(*cover, t);
     return out;
   }
 
