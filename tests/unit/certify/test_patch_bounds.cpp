@@ -15,9 +15,11 @@ TEST_CASE("every point of a triangle lies within its covering radius of a corner
   std::uniform_real_distribution<double> u(-1, 1);
   for (int trial = 0; trial < 300; ++trial) {
     const Vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng));
-    // Every tenth one a sliver: its third corner near the first edge.
-    const Vec3 c =
-        trial % 10 == 0 ? 0.3 * a + 0.7 * b + Vec3(0, 0, 1e-3) : Vec3(u(rng), u(rng), u(rng));
+    // Every third one obtuse: its third corner over a random point of the first edge, at a
+    // random small height (a sliver); the others anywhere.
+    const double s = 0.5 * (u(rng) + 1), height = 0.2 * std::pow(10.0, 2 * u(rng) - 1);
+    const Vec3 c = trial % 3 == 0 ? (1 - s) * a + s * b + Vec3(0, 0, height * norm(b - a))
+                                  : Vec3(u(rng), u(rng), u(rng));
     const double radius = covering_radius(a, b, c);
     double farthest = 0;
     for (int i = 0; i <= 100; ++i) {
