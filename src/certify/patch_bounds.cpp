@@ -157,10 +157,6 @@ double convex_upper_abs(const Patch& patch, std::span<const TriangleCorners> ref
   return best;
 }
 
-}  // namespace
-
-namespace {
-
 // The covering radius of a triangle whose angle at `apex` is not acute, across from the edge
 // pq (docs/CERTIFICATION.md "Bounds on one patch"): the farthest a point of it lies from every
 // corner is where the perpendicular bisector of an edge at the apex meets pq, at
