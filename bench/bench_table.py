@@ -361,6 +361,8 @@ def main():
                                    median_run(os.path.join(LARGE, file), NOMINAL, 2, reps=1,
                                               scheme=scheme))
     fin2, _ = t1[("finishing", "all")]
+    # The other generator's finishing part (the workloads issue 24 measured its whole run on).
+    dfin2, _ = median_run(os.path.join(DECIMATED, "core_finishing.stl"), DECIMATED_NOMINAL, 2)
 
     p("== Stages (δ = 0.1 %, 2 threads; time in seconds; paper: Table 1) ==")
     p(f"{'stage':<14}{'scheme':<9}{'triangles':>10}{'samples':>10}{'small':>9}"
@@ -478,6 +480,9 @@ def main():
            fin2["total"] < 2)
     target("  two-sided (issue 19)", f"{fin2['total']:.3f} s", "< 1.0 s", fin2["total"] < 1.0)
     target("  two-sided (issue 24)", f"{fin2['total']:.3f} s", "<= 0.6 s", fin2["total"] <= 0.6)
+    target("  decimated part (issue 24)", f"{dfin2['total']:.3f} s (certify "
+           f"{dfin2['phases']['certify']:.3f} + {dfin2['phases'].get('reverse certify', 0):.3f})",
+           "<= 0.6 s", dfin2["total"] <= 0.6)
     target("  as five commands (Makefile)", f"{steps_total:.3f} s", "-", True)
     target("read + weld (1.25 M + 17 k tri)", f"{fin2['phases']['read']:.3f} s", "< 0.4 s",
            fin2["phases"]["read"] < 0.4)
