@@ -637,8 +637,8 @@ class Certifier {
   bool splits_first(const Patch& p) const {
     if (p.near_checked) return false;
     const auto& c = p.corners;
-    return splits_first(covering_radius(c[0].point, c[1].point, c[2].point), p.upper(), p.lower(),
-                        std::max({c[0].d, c[1].d, c[2].d}), std::min({c[0].d, c[1].d, c[2].d}));
+    return splits_first(p.radius, p.upper(), p.lower(), std::max({c[0].d, c[1].d, c[2].d}),
+                        std::min({c[0].d, c[1].d, c[2].d}));
   }
   // The same for a patch of covering radius h, bounds [lower, upper] and corners' values
   // within [low, high].
@@ -725,7 +725,7 @@ class Certifier {
     const Vec3 middle = 0.5 * (from + to);
     const double halves =
         std::max(covering_radius(from, middle, apex), covering_radius(middle, to, apex));
-    return halves <= kBisectedRadius * covering_radius(from, to, apex) ? e : -1;
+    return halves <= kBisectedRadius * p.radius ? e : -1;
   }
 
   // Each patch split (bisected_edge); the new points measured, added to the measured extremes

@@ -233,9 +233,10 @@ void bound_from_corners(Patch& patch, std::span<const TriangleCorners> reference
   patch.lower_abs = 0;
   patch.high = std::numeric_limits<double>::infinity();
   patch.low = -patch.high;
+  patch.radius = covering_radius(c[0].point, c[1].point, c[2].point);
   double h = 0;
   if (side_is_continuous) {
-    h = covering_radius(c[0].point, c[1].point, c[2].point) * (1 + 1e-12) + slack;
+    h = patch.radius * (1 + 1e-12) + slack;
     patch.high = std::max({c[0].d, c[1].d, c[2].d}) + h;
     patch.low = std::min({c[0].d, c[1].d, c[2].d}) - h;
   }

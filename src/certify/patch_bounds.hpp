@@ -39,6 +39,8 @@ struct Patch {
   std::uint32_t triangle = 0;  // of the sampled mesh
   std::uint32_t depth = 0;     // 0 for a lattice sub-triangle, +1 per split
   bool near_checked = false;   // bounded by the nearby triangles (bound_by_nearby) already
+  double radius = 0;  // covering_radius of the corners, set by bound_from_corners, which every
+                      // patch refinement holds has been through
   // Proven: upper_abs >= |d| everywhere on the patch, and when side != 0, side * d >=
   // lower_abs everywhere: the error has that sign with |d| >= lower_abs, or, where the patch
   // touches the reference (lower_abs < 0), it crosses to the other side by -lower_abs at most.
