@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "certify/patch_bounds.hpp"
@@ -14,6 +15,7 @@
 #include "sampling/lattice_triangles.hpp"
 #include "sampling/sample_normals.hpp"
 #include "search/sample_searcher.hpp"
+#include "util/buffer.hpp"
 #include "util/ordered_reduce.hpp"
 
 namespace ncv {
@@ -693,9 +695,7 @@ class Certifier {
       const std::size_t rest = waiting.size() - first;
       const std::size_t take = static_cast<std::size_t>(std::min<std::uint64_t>(
           budget, first + (rest > 0 ? std::max<std::size_t>(rest / 4, 1) : 0)));
-      const std::vector<Patch> worst(waiting.begin(),
-                                     waiting.begin() + static_cast<std::ptrdiff_t>(take));
-      std::vector<Patch> children = split(worst);
+      const Buffer<Patch> children = split(std::span<const Patch>(waiting).first(take));
       splits_ += take;
       open.assign(waiting.begin() + static_cast<std::ptrdiff_t>(take), waiting.end());
       for (const Patch& child : children) {
@@ -729,15 +729,16 @@ class Certifier {
   }
 
   // Each patch split (bisected_edge); the new points measured, added to the measured extremes
-  // in order. Returns the children, in order, and counts the points in added_.
-  std::vector<Patch> split(const std::vector<Patch>& parents) {
+  // in order. Returns the children, in order, and counts the points in added_. In a Buffer:
+  // a round's children (tens of MB) were fresh pages each round, cleared by the kernel.
+  Buffer<Patch> split(std::span<const Patch> parents) {
     std::vector<int> edges(parents.size());
     std::vector<std::size_t> first(parents.size() + 1, 0);
     for (std::size_t k = 0; k < parents.size(); ++k) {
       edges[k] = bisected_edge(parents[k]);
       first[k + 1] = first[k] + (edges[k] >= 0 ? 2 : 4);
     }
-    std::vector<Patch> children(first.back());
+    Buffer<Patch> children(first.back());
     std::vector<std::array<PatchCorner, 3>> points(parents.size());  // the new ones, per parent
     const auto reference = index_.triangles();
     const NearbyTargets targets = targets_now();
@@ -763,6 +764,7 @@ class Certifier {
       }
       for (std::size_t q = 0; q < first[k + 1] - first[k]; ++q) {
         Patch& child = children[first[k] + q];
+        child = Patch{};
         child.corners = parts[q];
         child.triangle = p.triangle;
         child.depth = p.depth + 1;
