@@ -125,6 +125,10 @@ class NearbyTriangles {
   bool for_each(const BoundingBox& box, double reach, std::uint64_t max_cells, Visit&& visit);
 
  private:
+  // Visits t; false when the visit asks to stop.
+  template <class Visit>
+  static bool goes_on(Visit& visit, std::uint32_t t);
+
   const SearchIndex& index_;
   std::vector<std::uint32_t> stamps_;
   std::uint32_t epoch_ = 0;
@@ -159,9 +163,8 @@ int free_prism_side(std::span<const TriangleCorners> reference, std::span<const 
 void bound_by_nearby(Patch& patch, NearbyTriangles& nearby, const SideWitness& witness,
                      const NearbyTargets& targets, double slack, bool side_is_continuous);
 
-// Visits t; false when the visit asks to stop.
 template <class Visit>
-bool goes_on(Visit& visit, std::uint32_t t) {
+bool NearbyTriangles::goes_on(Visit& visit, std::uint32_t t) {
   if constexpr (std::is_same_v<std::invoke_result_t<Visit&, std::uint32_t>, bool>) {
     return visit(t);
   } else {
