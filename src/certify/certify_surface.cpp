@@ -568,7 +568,7 @@ class Certifier {
     Covered out;
     if (cover) out.measured = measure_for(*cover, t);
     Extremes against = measured_;
-    for (const PatchCorner& m : out.measured) against.add(m.d, m.point);
+    for (const PatchCorner& m : out.measured) against.add(m.d, global(m.point));
     for_each_lattice_triangle(samples_, t, [&](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
       if (std::optional<Patch> patch =
               bound_patch(t, a, b, c, radius, out.fold, against, cover ? &*cover : nullptr)) {

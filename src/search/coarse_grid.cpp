@@ -1,6 +1,7 @@
 #include "search/coarse_grid.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <vector>
 
 #include "util/parallel_over.hpp"
@@ -46,7 +47,8 @@ BackgroundGrid coarsen(const BackgroundGrid& fine) {
     merged_list(fine, coarse, c, list);
     coarse.cell_offsets[c + 1] = list.size();
   });
-  for (std::uint64_t c = 0; c < cells; ++c) coarse.cell_offsets[c + 1] += coarse.cell_offsets[c];
+  std::partial_sum(coarse.cell_offsets.begin(), coarse.cell_offsets.end(),
+                   coarse.cell_offsets.begin());
   coarse.cell_triangles.resize(coarse.cell_offsets[cells]);
   parallel_over(cells, 1 << 10, [&](std::size_t c) {
     thread_local std::vector<std::uint32_t> list;
