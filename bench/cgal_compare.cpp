@@ -66,7 +66,9 @@ int main(int argc, char** argv) {
 
   std::vector<Triangle> triangles;
   triangles.reserve(nominal.triangle_count());
-  for (const ncv::TriangleCorners& c : nominal.corners()) {
+  const ncv::MeshCorners corners = nominal.corners();
+  for (std::size_t t = 0; t < corners.size(); ++t) {
+    const ncv::TriangleCorners c = corners[t];
     triangles.emplace_back(point(c[0]), point(c[1]), point(c[2]));
   }
   const ncv::Stopwatch build_clock;

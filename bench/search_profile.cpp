@@ -135,7 +135,7 @@ double whole_pass(ncv::GridSearcher& search, const std::vector<ncv::Vec3>& point
 // triangle.
 double kernel_floor(const ncv::ReferenceSurface& nominal, const std::vector<ncv::Vec3>& points,
                     const std::vector<std::uint32_t>& answers) {
-  const std::span<const ncv::TriangleCorners> corners = nominal.corners();
+  const ncv::MeshCorners corners = nominal.corners();
   const ncv::Stopwatch clock;
   double sum = 0;
   for (std::size_t i = 0; i < points.size(); ++i) {

@@ -86,7 +86,7 @@ std::optional<double> flat_pair_upper_abs(const Patch& patch, const TriangleCorn
 // corners equal), which alone can make a flat pair: found by sorting their edges, not by
 // trying every pair (up to 496 flat-pair tests a patch, 2 % of a finishing run's profile).
 std::vector<std::pair<std::size_t, std::size_t>> edge_sharing_pairs(
-    std::span<const TriangleCorners> reference, std::span<const std::uint32_t> near) {
+    MeshCorners reference, std::span<const std::uint32_t> near) {
   struct Edge {
     std::array<double, 6> ends;
     std::size_t index;
@@ -120,8 +120,7 @@ std::vector<std::pair<std::size_t, std::size_t>> edge_sharing_pairs(
 // Convexity: min over the corners' closest triangles t of max over corners of dist(c, t), and
 // over the pairs of them that make a flat convex quadrilateral unless one triangle gives
 // `enough` already.
-double convex_upper_abs(const Patch& patch, std::span<const TriangleCorners> reference,
-                        double enough) {
+double convex_upper_abs(const Patch& patch, MeshCorners reference, double enough) {
   const auto& c = patch.corners;
   if (c[0].face == c[1].face && c[1].face == c[2].face) {
     return std::max({std::fabs(c[0].d), std::fabs(c[1].d), std::fabs(c[2].d)});
@@ -226,8 +225,8 @@ void take_side(Patch& patch, int side, double reached) {
   patch.lower_abs = reached;
 }
 
-void bound_from_corners(Patch& patch, std::span<const TriangleCorners> reference, double slack,
-                        bool side_is_continuous, const NearbyTargets* targets) {
+void bound_from_corners(Patch& patch, MeshCorners reference, double slack, bool side_is_continuous,
+                        const NearbyTargets* targets) {
   const auto& c = patch.corners;
   patch.side = 0;
   patch.lower_abs = 0;
@@ -280,8 +279,8 @@ bool strictly_inside(Vec3 p, Vec3 a, Vec3 b, Vec3 c, Vec3 n) {
 
 }  // namespace
 
-bool shadows_cover(std::span<const TriangleCorners> reference, std::span<const std::uint32_t> cover,
-                   Vec3 n, const TriangleCorners& shrunk, double slack) {
+bool shadows_cover(MeshCorners reference, std::span<const std::uint32_t> cover, Vec3 n,
+                   const TriangleCorners& shrunk, double slack) {
   const Vec3 o = shrunk[0];
   const auto onto_plane = [&](Vec3 p) { return p - dot(n, p - o) * n; };
   const Vec3 middle = (shrunk[0] + shrunk[1] + shrunk[2]) / 3.0;
@@ -306,14 +305,15 @@ bool shadows_cover(std::span<const TriangleCorners> reference, std::span<const s
   // Only the edges whose shadow comes near the shrunk patch's matter, outline or not.
   std::vector<Edge> edges;
   for (const std::uint32_t t : cover) {
+    const TriangleCorners corners = reference[t];
     for (int k = 0; k < 3; ++k) {
-      Vec3 p = reference[t][k], q = reference[t][(k + 1) % 3];
+      Vec3 p = corners[k], q = corners[(k + 1) % 3];
       BoundingBox shadow;
       shadow.extend(onto_plane(p));
       shadow.extend(onto_plane(q));
       if (box_gap(shadow, shrunk_box) > slack) continue;
       if (std::tie(q[0], q[1], q[2]) < std::tie(p[0], p[1], p[2])) std::swap(p, q);
-      edges.push_back({{p[0], p[1], p[2], q[0], q[1], q[2]}, reference[t][(k + 2) % 3]});
+      edges.push_back({{p[0], p[1], p[2], q[0], q[1], q[2]}, corners[(k + 2) % 3]});
     }
   }
   std::sort(edges.begin(), edges.end(),
@@ -358,7 +358,7 @@ std::optional<double> covering_bound(const Patch& patch, NearbyTriangles& nearby
   for (const PatchCorner& corner : c)
     patch_height = std::max(patch_height, std::fabs(height(corner.point)));
   const auto onto_plane = [&](Vec3 p) { return p - height(p) * n; };
-  const std::span<const TriangleCorners> reference = nearby.triangles();
+  const MeshCorners reference = nearby.triangles();
   // Gathered farther than the cutoff and the patch's height: an edge that is only on the
   // outline because its other triangle was not gathered lies farther than that from the
   // patch, so with both ends within the cutoff of the plane, its shadow stays clear of the
@@ -389,7 +389,7 @@ std::optional<double> covering_bound(const Patch& patch, NearbyTriangles& nearby
 // convexity, or the triangles that cover it.
 double nearby_upper_abs(const Patch& patch, NearbyTriangles& nearby, double width,
                         double enough_abs, double slack) {
-  const std::span<const TriangleCorners> reference = nearby.triangles();
+  const MeshCorners reference = nearby.triangles();
   double largest = 0;
   for (const PatchCorner& c : patch.corners) largest = std::max(largest, std::fabs(c.d));
   // A triangle much farther than the corners from the surface would not bound |d| much below
@@ -459,7 +459,7 @@ void prove_side(Patch& patch, NearbyTriangles& nearby, double slack) {
   if (side == 0) return;  // the corners already show that the error changes sign or is 0
   const TriangleCorners corners = {patch.corners[0].point, patch.corners[1].point,
                                    patch.corners[2].point};
-  const std::span<const TriangleCorners> reference = nearby.triangles();
+  const MeshCorners reference = nearby.triangles();
   const double reach = patch.upper_abs;
   double least = reach;
   BoundingBox box;
@@ -480,7 +480,7 @@ void prove_side(Patch& patch, NearbyTriangles& nearby, double slack) {
 
 }  // namespace
 
-int free_prism_side(std::span<const TriangleCorners> reference, std::span<const std::uint32_t> near,
+int free_prism_side(MeshCorners reference, std::span<const std::uint32_t> near,
                     const TriangleCorners& shrunk, Vec3 n, double low, double high,
                     const SideWitness& witness, double slack) {
   const Vec3 centre = (shrunk[0] + shrunk[1] + shrunk[2]) / 3.0;

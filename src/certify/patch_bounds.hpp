@@ -98,14 +98,14 @@ struct NearbyTargets {
 // the sign is the true side of a closed surface (pseudonormal), so it can only change where
 // the patch touches the surface. With `targets`, the flat pairs (the costliest part of the
 // convexity bound) are left out where |d| is already small enough to settle the patch.
-void bound_from_corners(Patch& patch, std::span<const TriangleCorners> reference, double slack,
-                        bool side_is_continuous, const NearbyTargets* targets = nullptr);
+void bound_from_corners(Patch& patch, MeshCorners reference, double slack, bool side_is_continuous,
+                        const NearbyTargets* targets = nullptr);
 
 // The reference triangles that can come within a distance of a patch, from the grid's cells.
 class NearbyTriangles {
  public:
   explicit NearbyTriangles(const SearchIndex& index);
-  std::span<const TriangleCorners> triangles() const { return index_.triangles(); }
+  MeshCorners triangles() const { return index_.triangles(); }
   // Calls visit(t) once for every triangle listed in a cell that meets the patch's box grown
   // by `reach` whose own box comes within `reach` of the patch's (a long sliver listed in
   // the cells but far from the patch is left out). When that grown box spans more than
@@ -138,8 +138,8 @@ class NearbyTriangles {
 // triangle `shrunk`, which lies in that plane: a point of it lies strictly inside one of
 // them and no edge of their union's outline comes within the slack of it
 // (docs/CERTIFICATION.md "Covering triangles").
-bool shadows_cover(std::span<const TriangleCorners> reference, std::span<const std::uint32_t> cover,
-                   Vec3 n, const TriangleCorners& shrunk, double slack);
+bool shadows_cover(MeshCorners reference, std::span<const std::uint32_t> cover, Vec3 n,
+                   const TriangleCorners& shrunk, double slack);
 
 // A point's signed distance to the reference, measured as a sample's is: the witness of the
 // side of a prism no reference triangle meets.
@@ -150,7 +150,7 @@ using SideWitness = std::function<double(Vec3)>;
 // reference triangles meets it (all those within its reach must be among them): +1 outside,
 // -1 inside, as a point of it measures; 0 when both prisms meet one (docs/CERTIFICATION.md
 // "The side at a contact").
-int free_prism_side(std::span<const TriangleCorners> reference, std::span<const std::uint32_t> near,
+int free_prism_side(MeshCorners reference, std::span<const std::uint32_t> near,
                     const TriangleCorners& shrunk, Vec3 n, double low, double high,
                     const SideWitness& witness, double slack);
 
@@ -190,7 +190,7 @@ bool NearbyTriangles::for_each(const BoundingBox& box, double reach, std::uint64
     cells *= static_cast<std::uint64_t>(hi[axis] - lo[axis] + 1);
   }
   if (cells > max_cells) {
-    const std::span<const TriangleCorners> triangles = index_.triangles();
+    const MeshCorners triangles = index_.triangles();
     if (triangles.size() > max_cells) return false;
     for (std::uint32_t t = 0; t < triangles.size(); ++t) {
       if (box_gap(box, search_box(triangles[t])) <= reach && !goes_on(visit, t)) return false;

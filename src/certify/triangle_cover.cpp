@@ -13,8 +13,7 @@ constexpr std::size_t kMaxMapCells = std::size_t{1} << 22;
 // The points of the triangle straight below the corners of `flat` (and the middles of their
 // edges) that stand farther than `beyond` from its plane, the farthest first, without
 // repeats, as many as allowed.
-std::vector<Vec3> points_below(const TriangleCorners& triangle,
-                               std::span<const TriangleCorners> reference,
+std::vector<Vec3> points_below(const TriangleCorners& triangle, MeshCorners reference,
                                std::span<const std::uint32_t> flat,
                                const TriangleCoverOptions& options) {
   const Vec3 a = triangle[0];
@@ -78,7 +77,7 @@ std::optional<TriangleCover> TriangleCover::build(const TriangleCorners& triangl
                        [&](std::uint32_t t) { near.push_back(t); })) {
     return std::nullopt;
   }
-  const std::span<const TriangleCorners> reference = nearby.triangles();
+  const MeshCorners reference = nearby.triangles();
 
   TriangleCover cover;
   cover.slack_ = slack;

@@ -71,8 +71,9 @@ Vec3 edge_sum(const EdgeIncidence& incidence, std::size_t e, NormalOf normal_of)
   return normalized(sum);
 }
 
-Vec3 face_normal_of(std::span<const TriangleCorners> corners, std::size_t t) {
-  return face_normal(corners[t][0], corners[t][1], corners[t][2]);
+Vec3 face_normal_of(MeshCorners corners, std::size_t t) {
+  const TriangleCorners c = corners[t];
+  return face_normal(c[0], c[1], c[2]);
 }
 
 void normalize_all(std::vector<Vec3>& vectors) {
@@ -82,7 +83,7 @@ void normalize_all(std::vector<Vec3>& vectors) {
 
 }  // namespace
 
-Buffer<Vec3> face_normals(std::span<const TriangleCorners> corners) {
+Buffer<Vec3> face_normals(MeshCorners corners) {
   Buffer<Vec3> normals(corners.size());
   parallel_over(corners.size(), 1 << 12,
                 [&](std::size_t t) { normals[t] = face_normal_of(corners, t); });
@@ -160,15 +161,15 @@ Pseudonormals halfedge_pseudonormals(const TriMesh& mesh, const EdgeIncidence& i
 // sum runs over its slots, which ascend, and so do their triangles: the triangle order
 // again, edge by edge in parallel (with the edges in the serial loop, the normals of the
 // 1.25 M-triangle finishing workpiece took 0.15-0.17 s on 2 threads, now 0.13-0.16 s).
-Pseudonormals array_pseudonormals(const Mesh& mesh, std::span<const TriangleCorners> corners,
-                                  EdgeIncidence incidence) {
+Pseudonormals array_pseudonormals(const Mesh& mesh, EdgeIncidence incidence) {
+  const MeshCorners corners(mesh);
   Pseudonormals normals;
   const std::size_t triangles = mesh.triangle_count();
   normals.face = face_normals(corners);
   Buffer<std::array<double, 3>> corner_angles(triangles);
   parallel_over(triangles, 1 << 12, [&](std::size_t t) {
     if (is_zero(normals.face[t])) return;
-    const auto& [a, b, c] = corners[t];
+    const auto [a, b, c] = corners[t];
     corner_angles[t] = {corner_angle(a, b, c), corner_angle(b, c, a), corner_angle(c, a, b)};
   });
   normals.vertex.assign(mesh.vertex_count(), Vec3(0, 0, 0));
@@ -194,15 +195,15 @@ bool fans_walkable(const EdgeIncidence& incidence, const TopologyReport& topolog
          incidence.slots.size() == incidence.edge_of_slot.size();
 }
 
-Vec3 FanPseudonormals::face(std::span<const TriangleCorners> corners, std::size_t triangle) {
+Vec3 FanPseudonormals::face(MeshCorners corners, std::size_t triangle) {
   return face_normal_of(corners, triangle);
 }
 
 // Around the vertex from `triangle` across one edge after another (each on exactly two
 // triangles) until back at `triangle`: its one fan, so every face it has. The step count is
 // bounded so that no structure can loop forever.
-Vec3 FanPseudonormals::vertex(const Mesh& mesh, std::span<const TriangleCorners> corners,
-                              std::size_t triangle, int k) const {
+Vec3 FanPseudonormals::vertex(const Mesh& mesh, std::size_t triangle, int k) const {
+  const MeshCorners corners(mesh);
   const std::uint32_t v = mesh.triangles[triangle][static_cast<std::size_t>(k)];
   VertexTerms terms;
   std::size_t t = triangle;
@@ -210,9 +211,10 @@ Vec3 FanPseudonormals::vertex(const Mesh& mesh, std::span<const TriangleCorners>
   // The slot of t along which the walk leaves it: first the one starting at v.
   std::uint32_t out = static_cast<std::uint32_t>(3 * t) + corner;
   for (std::size_t steps = 0; steps < incidence_.slots.size(); ++steps) {
-    const Vec3 n = face_normal_of(corners, t);
+    const TriangleCorners c = corners[t];
+    const Vec3 n = face_normal(c[0], c[1], c[2]);
     if (!is_zero(n)) {
-      const auto at = [&](std::uint32_t i) { return corners[t][(corner + i) % 3]; };
+      const auto at = [&](std::uint32_t i) { return c[(corner + i) % 3]; };
       terms.add(t, corner_angle(at(0), at(1), at(2)) * n);
     }
     const std::uint32_t e = incidence_.edge_of_slot[out];
@@ -230,8 +232,7 @@ Vec3 FanPseudonormals::vertex(const Mesh& mesh, std::span<const TriangleCorners>
   return terms.normalized_sum();
 }
 
-Vec3 FanPseudonormals::edge(std::span<const TriangleCorners> corners, std::size_t triangle,
-                            int k) const {
+Vec3 FanPseudonormals::edge(MeshCorners corners, std::size_t triangle, int k) const {
   const std::uint32_t e = incidence_.edge_of_slot[3 * triangle + static_cast<std::size_t>(k)];
   if (e == kNoEdge) return Vec3(0, 0, 0);
   return edge_sum(incidence_, e, [&](std::size_t f) { return face_normal_of(corners, f); });

@@ -21,6 +21,7 @@
 
 #include "geometry/closest_point.hpp"
 #include "mesh/mesh.hpp"
+#include "mesh/mesh_corners.hpp"
 #include "mesh/mesh_topology.hpp"
 #include "mesh/tri_mesh.hpp"
 #include "util/buffer.hpp"
@@ -35,15 +36,14 @@ struct Pseudonormals {
 };
 
 // Face normals only (the first step of both ways below), from each triangle's corners.
-Buffer<Vec3> face_normals(std::span<const TriangleCorners> corners);
+Buffer<Vec3> face_normals(MeshCorners corners);
 
 // On the halfedge structure built by halfedge_mesh from `incidence`.
 Pseudonormals halfedge_pseudonormals(const TriMesh& mesh, const EdgeIncidence& incidence);
 
-// On the arrays: `corners` are `mesh`'s triangles' corners, `incidence` its edge incidence
-// (its edge_of_slot becomes the result's).
-Pseudonormals array_pseudonormals(const Mesh& mesh, std::span<const TriangleCorners> corners,
-                                  EdgeIncidence incidence);
+// On the arrays: `incidence` is `mesh`'s edge incidence (its edge_of_slot becomes the
+// result's).
+Pseudonormals array_pseudonormals(const Mesh& mesh, EdgeIncidence incidence);
 
 // True when every vertex's pseudonormal can be found by walking around it (FanPseudonormals):
 // every edge on two triangles, one fan of triangles at every vertex, no triangle that repeats
@@ -63,12 +63,11 @@ class FanPseudonormals {
   explicit FanPseudonormals(EdgeIncidence incidence) : incidence_(std::move(incidence)) {}
 
   // `mesh` and `corners` are the surface's (after any flip, as `incidence`).
-  static Vec3 face(std::span<const TriangleCorners> corners, std::size_t triangle);
+  static Vec3 face(MeshCorners corners, std::size_t triangle);
   // At corner k of `triangle`.
-  Vec3 vertex(const Mesh& mesh, std::span<const TriangleCorners> corners, std::size_t triangle,
-              int k) const;
+  Vec3 vertex(const Mesh& mesh, std::size_t triangle, int k) const;
   // Along slot k of `triangle` (from its corner k to the next).
-  Vec3 edge(std::span<const TriangleCorners> corners, std::size_t triangle, int k) const;
+  Vec3 edge(MeshCorners corners, std::size_t triangle, int k) const;
 
  private:
   EdgeIncidence incidence_;

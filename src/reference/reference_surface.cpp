@@ -7,8 +7,6 @@
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include "mesh/halfedge_mesh.hpp"
 #include "util/error.hpp"
@@ -93,7 +91,6 @@ ReferenceSurface::ReferenceSurface(const Mesh& mesh, const std::string& source,
     }
     for (std::uint32_t& slot : incidence.slots) slot = slot / 3 * 3 + (2 - slot % 3);
   }
-  copy_corners();
   compute_normals(incidence, holding);
   choose_sign_method(source);
 }
@@ -123,8 +120,7 @@ ReferenceSurface::ReferenceSurface(const Mesh& mesh, const std::string& source,
   on_halfedges_ = true;
   boundary_loops_ = std::move(stored.boundary_loops);
   boundary_loop_count_ = stored.boundary_loop_count;
-  copy_corners();
-  normals_.face = face_normals(corners_);
+  normals_.face = face_normals(corners());
   normals_.vertex = std::move(stored.vertex_pseudonormals);
   normals_.edge = std::move(stored.edge_pseudonormals);
   normals_.edge_of_slot = std::move(stored.edge_of_slot);
@@ -139,7 +135,7 @@ void ReferenceSurface::compute_normals(EdgeIncidence& incidence, SurfaceHolding 
     if (fans_walkable(incidence, topology_)) {
       fans_.emplace(std::move(incidence));
     } else {
-      normals_ = array_pseudonormals(local_, corners_, std::move(incidence));
+      normals_ = array_pseudonormals(local_, std::move(incidence));
     }
     return;
   }
@@ -151,19 +147,6 @@ void ReferenceSurface::compute_normals(EdgeIncidence& incidence, SurfaceHolding 
   boundary_loops_ = translated(std::move(loops), origin_);
   normals_ = halfedge_pseudonormals(halfedges, incidence);
   on_halfedges_ = true;
-}
-
-// Into an uninitialised buffer, in parallel: zero-filling 72 bytes per triangle first, on
-// one thread, took as long as the copy (a 968 k-triangle nominal: 54 ms).
-void ReferenceSurface::copy_corners() {
-  corners_.resize(local_.triangle_count());
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, corners_.size(), 1 << 14),
-      [&](const tbb::blocked_range<std::size_t>& range) {
-        for (std::size_t t = range.begin(); t < range.end(); ++t) {
-          corners_[t] = {local_.corner(t, 0), local_.corner(t, 1), local_.corner(t, 2)};
-        }
-      });
 }
 
 void ReferenceSurface::orient_outward(const std::string& source) {
@@ -186,11 +169,11 @@ void ReferenceSurface::choose_sign_method(const std::string& source) {
 
 Vec3 ReferenceSurface::pseudonormal(std::size_t triangle, TriangleFeature feature) const {
   if (is_vertex(feature)) {
-    if (fans_) return fans_->vertex(local_, corners_, triangle, vertex_index(feature));
+    if (fans_) return fans_->vertex(local_, triangle, vertex_index(feature));
     return normals_.vertex[local_.triangles[triangle][vertex_index(feature)]];
   }
   if (is_edge(feature)) {
-    if (fans_) return fans_->edge(corners_, triangle, edge_index(feature));
+    if (fans_) return fans_->edge(corners(), triangle, edge_index(feature));
     const std::uint32_t edge = normals_.edge_of_slot[3 * triangle + edge_index(feature)];
     return edge == kNoEdge ? Vec3(0, 0, 0) : normals_.edge[edge];
   }
@@ -198,7 +181,7 @@ Vec3 ReferenceSurface::pseudonormal(std::size_t triangle, TriangleFeature featur
 }
 
 Vec3 ReferenceSurface::face_normal(std::size_t triangle) const {
-  return fans_ ? FanPseudonormals::face(corners_, triangle) : normals_.face[triangle];
+  return fans_ ? FanPseudonormals::face(corners(), triangle) : normals_.face[triangle];
 }
 
 }  // namespace ncv

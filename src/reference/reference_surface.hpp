@@ -40,6 +40,7 @@
 #include "geometry/coordinate_limit.hpp"
 #include "mesh/boundary_loops.hpp"
 #include "mesh/mesh.hpp"
+#include "mesh/mesh_corners.hpp"
 #include "mesh/mesh_topology.hpp"
 #include "reference/pseudonormals.hpp"
 #include "reference/sign_method.hpp"
@@ -83,12 +84,13 @@ class ReferenceSurface {
   // rest is taken as stored after checking its sizes and indices (InputError otherwise).
   ReferenceSurface(const Mesh& mesh, const std::string& source, StoredSurface stored);
 
-  std::size_t triangle_count() const { return corners_.size(); }
+  std::size_t triangle_count() const { return local_.triangle_count(); }
   Vec3 origin() const { return origin_; }
   Vec3 to_local(Vec3 global) const { return global - origin_; }
 
-  std::span<const TriangleCorners> corners() const { return corners_; }
-  const TriangleCorners& corners(std::size_t triangle) const { return corners_[triangle]; }
+  // The triangles' corners in the local frame, after any flip.
+  MeshCorners corners() const { return MeshCorners(local_); }
+  TriangleCorners corners(std::size_t triangle) const { return corners()[triangle]; }
   const BoundingBox& local_bounds() const { return local_bounds_; }
 
   // Topology of the mesh as given (before any flip).
@@ -116,12 +118,10 @@ class ReferenceSurface {
   void enter_local_frame(const Mesh& mesh, const std::string& source);
   void orient_outward(const std::string& source);
   void choose_sign_method(const std::string& source);
-  void copy_corners();
   void compute_normals(EdgeIncidence& incidence, SurfaceHolding holding);
 
   Vec3 origin_{0, 0, 0};
   Mesh local_;
-  Buffer<TriangleCorners> corners_;
   BoundingBox local_bounds_;
   TopologyReport topology_;
   bool flipped_ = false;

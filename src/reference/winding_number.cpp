@@ -58,13 +58,13 @@ double solid_angle(Vec3 a, Vec3 b, Vec3 c) {
   return 2.0 * std::atan2(numerator, denominator);
 }
 
-double winding_number_exact(std::span<const TriangleCorners> triangles, Vec3 q) {
+double winding_number_exact(MeshCorners triangles, Vec3 q) {
   double sum = 0;
-  for (const TriangleCorners& t : triangles) sum += solid_angle_from(q, t);
+  for (std::size_t t = 0; t < triangles.size(); ++t) sum += solid_angle_from(q, triangles[t]);
   return sum * kInverseFourPi;
 }
 
-WindingNumberTree::WindingNumberTree(std::span<const TriangleCorners> triangles) {
+WindingNumberTree::WindingNumberTree(MeshCorners triangles) {
   std::vector<std::uint32_t> order(triangles.size());
   for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
   nodes_.reserve(2 * (triangles.size() / kLeafSize + 1));
@@ -74,24 +74,26 @@ WindingNumberTree::WindingNumberTree(std::span<const TriangleCorners> triangles)
 }
 
 WindingNumberTree::Node WindingNumberTree::summarise(std::span<const std::uint32_t> members,
-                                                     std::span<const TriangleCorners> triangles) {
+                                                     MeshCorners triangles) {
   Node node;
   double area = 0;
   Vec3 weighted{0, 0, 0};
   BoundingBox box;
   for (std::uint32_t t : members) {
-    const double a = norm(area_vector_of(triangles[t]));
+    const TriangleCorners corners = triangles[t];
+    const double a = norm(area_vector_of(corners));
     area += a;
-    weighted += a * centroid(triangles[t]);
-    for (const Vec3& corner : triangles[t]) box.extend(corner);
+    weighted += a * centroid(corners);
+    for (const Vec3& corner : corners) box.extend(corner);
   }
   node.centre = area > 0 ? weighted / area : box.center();
   for (std::uint32_t t : members) {
-    const Vec3 n = area_vector_of(triangles[t]);
-    const Vec3 offset = centroid(triangles[t]) - node.centre;
+    const TriangleCorners corners = triangles[t];
+    const Vec3 n = area_vector_of(corners);
+    const Vec3 offset = centroid(corners) - node.centre;
     // int_t x x^T / |t| = (sum v v^T + s s^T) / 12 for corners v relative to p~, s their sum.
-    const std::array<Vec3, 3> v = {triangles[t][0] - node.centre, triangles[t][1] - node.centre,
-                                   triangles[t][2] - node.centre};
+    const std::array<Vec3, 3> v = {corners[0] - node.centre, corners[1] - node.centre,
+                                   corners[2] - node.centre};
     const Vec3 s = v[0] + v[1] + v[2];
     node.area_vector += n;
     for (int i = 0; i < 3; ++i) {
@@ -111,8 +113,7 @@ WindingNumberTree::Node WindingNumberTree::summarise(std::span<const std::uint32
 // Median split of the centroids along the longest axis of their box; ties broken by index
 // so the tree (and every evaluation order) is the same on every run.
 std::uint32_t WindingNumberTree::build(std::vector<std::uint32_t>& order, std::uint32_t begin,
-                                       std::uint32_t end,
-                                       std::span<const TriangleCorners> triangles) {
+                                       std::uint32_t end, MeshCorners triangles) {
   const auto index = static_cast<std::uint32_t>(nodes_.size());
   const std::span<std::uint32_t> members(order.data() + begin, end - begin);
   nodes_.push_back(summarise(members, triangles));

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "geometry/closest_point.hpp"
+#include "mesh/mesh_corners.hpp"
 
 namespace ncv {
 
@@ -31,14 +32,14 @@ namespace ncv {
 double solid_angle(Vec3 a, Vec3 b, Vec3 c);
 
 // The reference: every triangle's solid angle, summed in index order.
-double winding_number_exact(std::span<const TriangleCorners> triangles, Vec3 q);
+double winding_number_exact(MeshCorners triangles, Vec3 q);
 
 class WindingNumberTree {
  public:
   static constexpr double kFarFieldRatio = 2.0;
   static constexpr std::uint32_t kLeafSize = 8;
 
-  explicit WindingNumberTree(std::span<const TriangleCorners> triangles);
+  explicit WindingNumberTree(MeshCorners triangles);
   double evaluate(Vec3 q) const;
 
  private:
@@ -53,9 +54,8 @@ class WindingNumberTree {
   };
 
   std::uint32_t build(std::vector<std::uint32_t>& order, std::uint32_t begin, std::uint32_t end,
-                      std::span<const TriangleCorners> triangles);
-  static Node summarise(std::span<const std::uint32_t> members,
-                        std::span<const TriangleCorners> triangles);
+                      MeshCorners triangles);
+  static Node summarise(std::span<const std::uint32_t> members, MeshCorners triangles);
 
   std::vector<Node> nodes_;
   std::vector<TriangleCorners> triangles_;  // in leaf order

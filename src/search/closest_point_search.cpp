@@ -47,8 +47,7 @@ void move_nearest_box_first(Candidate* found, std::size_t count) {
 
 }  // namespace
 
-ClosestHit brute_force_closest(std::span<const TriangleCorners> triangles, Vec3 q,
-                               SearchCounters& counters) {
+ClosestHit brute_force_closest(MeshCorners triangles, Vec3 q, SearchCounters& counters) {
   ClosestHit best;
   for (std::uint32_t t = 0; t < triangles.size(); ++t) {
     const TrianglePoint candidate = closest_point_on_triangle(q, triangles[t]);
@@ -203,13 +202,8 @@ void GridSearcher::scan_cell(Query& query, std::uint64_t begin, std::uint64_t en
         count += (lanes >> lane) & 1u;
       }
     }
-    // The candidates' corners are requested together, so their cache misses overlap; a
-    // triangle's 72 bytes always span two cache lines.
-    for (std::size_t k = 0; k < count; ++k) {
-      const char* corners = reinterpret_cast<const char*>(&triangles_[found[k].triangle]);
-      __builtin_prefetch(corners);
-      __builtin_prefetch(corners + sizeof(TriangleCorners) - 1);
-    }
+    // The candidates' vertex indices are requested together, so their cache misses overlap.
+    for (std::size_t k = 0; k < count; ++k) triangles_.prefetch(found[k].triangle);
     move_nearest_box_first(found, count);
     for (std::size_t k = 0; k < count; ++k) {
       if (found[k].squared > query.limit) continue;

@@ -51,6 +51,7 @@
 #include <vector>
 
 #include "geometry/closest_point.hpp"
+#include "mesh/mesh_corners.hpp"
 #include "search/background_grid.hpp"
 #include "search/reference_boxes.hpp"
 #include "search/search_index.hpp"
@@ -78,8 +79,7 @@ inline bool improves(double squared_distance, std::uint32_t triangle, const Clos
          (squared_distance == best.squared_distance && triangle < best.triangle);
 }
 
-ClosestHit brute_force_closest(std::span<const TriangleCorners> triangles, Vec3 q,
-                               SearchCounters& counters);
+ClosestHit brute_force_closest(MeshCorners triangles, Vec3 q, SearchCounters& counters);
 
 class GridSearcher {
  public:
@@ -110,7 +110,7 @@ class GridSearcher {
   double cell_gap(const Query& query, int axis, std::int64_t i) const;
   double unvisited_squared_distance(const Query& query) const;
 
-  std::span<const TriangleCorners> triangles_;
+  MeshCorners triangles_;
   const BackgroundGrid& grid_;
   std::span<const BoxBlock> boxes_;
   // The grid's origin, box and last cell index by axis.

@@ -81,8 +81,7 @@ BoundingBox search_box(const TriangleCorners& c) {
   return box;
 }
 
-Buffer<BoxBlock> build_reference_boxes(std::span<const TriangleCorners> triangles,
-                                       const BackgroundGrid& grid) {
+Buffer<BoxBlock> build_reference_boxes(MeshCorners triangles, const BackgroundGrid& grid) {
   Buffer<FloatBox> triangle_boxes(triangles.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles.size(), 1 << 14),
                     [&](const tbb::blocked_range<std::size_t>& range) {

@@ -15,6 +15,7 @@
 
 #include "geometry/bounding_box.hpp"
 #include "geometry/closest_point.hpp"
+#include "mesh/mesh_corners.hpp"
 #include "search/background_grid.hpp"
 #include "util/buffer.hpp"
 
@@ -39,7 +40,6 @@ float float_at_or_above(double x);
 BoundingBox search_box(const TriangleCorners& corners);
 
 // Built in parallel; `grid` must have been built for (or validated against) `triangles`.
-Buffer<BoxBlock> build_reference_boxes(std::span<const TriangleCorners> triangles,
-                                       const BackgroundGrid& grid);
+Buffer<BoxBlock> build_reference_boxes(MeshCorners triangles, const BackgroundGrid& grid);
 
 }  // namespace ncv

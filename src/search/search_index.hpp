@@ -34,7 +34,7 @@ class SearchIndex {
   explicit SearchIndex(const IndexedReference& reference);
 
   const ReferenceSurface& surface() const { return *reference_->surface; }
-  std::span<const TriangleCorners> triangles() const { return reference_->surface->corners(); }
+  MeshCorners triangles() const { return reference_->surface->corners(); }
   const BackgroundGrid& grid() const { return reference_->grid; }
   std::span<const BoxBlock> boxes() const { return boxes_; }
 

@@ -146,14 +146,6 @@ inline Mesh random_soup(std::mt19937_64& rng, std::size_t count, double size) {
 }
 
 // Each triangle's corners, as the winding number and the arrays' pseudonormals read them.
-inline std::vector<TriangleCorners> corners_of(const Mesh& mesh) {
-  std::vector<TriangleCorners> corners;
-  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-    corners.push_back({mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2)});
-  }
-  return corners;
-}
-
 inline Mesh translated(Mesh mesh, Vec3 by) {
   for (Vec3& v : mesh.vertices) v += by;
   return mesh;

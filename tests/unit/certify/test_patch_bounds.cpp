@@ -74,8 +74,8 @@ TEST_CASE("a triangle's covering radius is at most its longest edge over sqrt(3)
 TEST_CASE("a patch rising from a contact keeps its lower bound near the contact",
           "[patch_bounds]") {
   // The reference: a large face in z = 0, outside above it, so d(p) = p.z over the patch.
-  const std::vector<TriangleCorners> reference = {
-      {Vec3(-10, -10, 0), Vec3(10, -10, 0), Vec3(0, 10, 0)}};
+  const ncv::Mesh face{{Vec3(-10, -10, 0), Vec3(10, -10, 0), Vec3(0, 10, 0)}, {{0, 1, 2}}};
+  const ncv::MeshCorners reference(face);
   Patch patch;
   patch.corners = {PatchCorner{Vec3(0, 0, 0), 0.0, 0}, PatchCorner{Vec3(0.2, 0, 1), 1.0, 0},
                    PatchCorner{Vec3(0, 0.2, 0.5), 0.5, 0}};

@@ -21,7 +21,7 @@ namespace fx = ncv::fixtures;
 void check_bit_identical(const ncv::Mesh& mesh) {
   const ncv::EdgeIncidence incidence = ncv::build_edge_incidence(mesh);
   REQUIRE(ncv::holds_as_halfedge_mesh(mesh, ncv::analyse_topology(mesh, incidence)));
-  const ncv::Pseudonormals arrays = ncv::array_pseudonormals(mesh, fx::corners_of(mesh), incidence);
+  const ncv::Pseudonormals arrays = ncv::array_pseudonormals(mesh, incidence);
   for (int threads : {1, 2}) {
     const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
     const ncv::Pseudonormals halfedges =
@@ -38,13 +38,13 @@ void check_bit_identical(const ncv::Mesh& mesh) {
 void check_fans_agree(const ncv::Mesh& mesh) {
   const ncv::EdgeIncidence incidence = ncv::build_edge_incidence(mesh);
   REQUIRE(ncv::fans_walkable(incidence, ncv::analyse_topology(mesh, incidence)));
-  const std::vector<ncv::TriangleCorners> corners = fx::corners_of(mesh);
-  const ncv::Pseudonormals arrays = ncv::array_pseudonormals(mesh, corners, incidence);
+  const ncv::MeshCorners corners(mesh);
+  const ncv::Pseudonormals arrays = ncv::array_pseudonormals(mesh, incidence);
   const ncv::FanPseudonormals fans(incidence);
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     CHECK(ncv::FanPseudonormals::face(corners, t) == arrays.face[t]);
     for (int k = 0; k < 3; ++k) {
-      CHECK(fans.vertex(mesh, corners, t, k) == arrays.vertex[mesh.triangles[t][k]]);
+      CHECK(fans.vertex(mesh, t, k) == arrays.vertex[mesh.triangles[t][k]]);
       const std::uint32_t e = arrays.edge_of_slot[3 * t + static_cast<std::size_t>(k)];
       CHECK(fans.edge(corners, t, k) == (e == ncv::kNoEdge ? ncv::Vec3(0, 0, 0) : arrays.edge[e]));
     }

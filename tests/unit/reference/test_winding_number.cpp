@@ -15,7 +15,7 @@ namespace fx = ncv::fixtures;
 
 // Largest |fast - exact| over points spread around the mesh's box (and far from it).
 double worst_error(const ncv::Mesh& mesh, std::mt19937_64& rng, int points) {
-  const auto corners = fx::corners_of(mesh);
+  const ncv::MeshCorners corners(mesh);
   const ncv::WindingNumberTree tree(corners);
   const ncv::BoundingBox box = ncv::bounding_box(mesh);
   const Vec3 pad = 0.3 * box.extent();
@@ -41,7 +41,8 @@ TEST_CASE("solid angle of an octant triangle is pi / 2", "[winding]") {
 }
 
 TEST_CASE("exact winding number of a box is 1 inside and 0 outside", "[winding]") {
-  const auto corners = fx::corners_of(fx::box({-1, -2, -3}, {1, 2, 3}));
+  const ncv::Mesh box = fx::box({-1, -2, -3}, {1, 2, 3});
+  const ncv::MeshCorners corners(box);
   std::mt19937_64 rng(1);
   for (int i = 0; i < 200; ++i) {
     const Vec3 inside = fx::random_point(rng, {-0.99, -1.99, -2.99}, {0.99, 1.99, 2.99});
@@ -49,8 +50,9 @@ TEST_CASE("exact winding number of a box is 1 inside and 0 outside", "[winding]"
     const Vec3 outside = fx::random_point(rng, {1.01, -5, -5}, {5, 5, 5});
     CHECK(ncv::winding_number_exact(corners, outside) == Approx(0.0).margin(1e-12));
   }
-  const auto inverted = fx::corners_of(fx::flipped(fx::box({-1, -2, -3}, {1, 2, 3})));
-  CHECK(ncv::winding_number_exact(inverted, {0, 0, 0}) == Approx(-1.0).margin(1e-12));
+  const ncv::Mesh inverted = fx::flipped(box);
+  CHECK(ncv::winding_number_exact(ncv::MeshCorners(inverted), {0, 0, 0}) ==
+        Approx(-1.0).margin(1e-12));
 }
 
 TEST_CASE("fast winding number matches the exact sum", "[winding]") {
@@ -74,8 +76,7 @@ TEST_CASE("fast winding number matches the exact sum", "[winding]") {
 TEST_CASE("fast winding number classifies points around a closed solid", "[winding]") {
   const fx::VoxelSolid solid = fx::pocketed_block();
   const ncv::Mesh mesh = solid.mesh(1.0);
-  const auto corners = fx::corners_of(mesh);
-  const ncv::WindingNumberTree tree(corners);
+  const ncv::WindingNumberTree tree{ncv::MeshCorners(mesh)};
   std::mt19937_64 rng(8);
   for (int i = 0; i < 5000; ++i) {
     const Vec3 q = fx::random_point(rng, {-1, -1, -1}, {5, 5, 3});
