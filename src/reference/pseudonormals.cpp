@@ -195,6 +195,17 @@ bool fans_walkable(const EdgeIncidence& incidence, const TopologyReport& topolog
          incidence.slots.size() == incidence.edge_of_slot.size();
 }
 
+// Every edge has exactly two slots there (fans_walkable).
+FanPseudonormals::FanPseudonormals(const EdgeIncidence& incidence)
+    : partner_(incidence.edge_of_slot.size()) {
+  parallel_over(incidence.edge_count(), 1 << 14, [&](std::size_t e) {
+    const std::uint32_t a = incidence.slots[incidence.edge_begin[e]];
+    const std::uint32_t b = incidence.slots[incidence.edge_begin[e] + 1];
+    partner_[a] = b;
+    partner_[b] = a;
+  });
+}
+
 Vec3 FanPseudonormals::face(MeshCorners corners, std::size_t triangle) {
   return face_normal_of(corners, triangle);
 }
@@ -210,16 +221,14 @@ Vec3 FanPseudonormals::vertex(const Mesh& mesh, std::size_t triangle, int k) con
   auto corner = static_cast<std::uint32_t>(k);  // v's corner in t
   // The slot of t along which the walk leaves it: first the one starting at v.
   std::uint32_t out = static_cast<std::uint32_t>(3 * t) + corner;
-  for (std::size_t steps = 0; steps < incidence_.slots.size(); ++steps) {
+  for (std::size_t steps = 0; steps < partner_.size(); ++steps) {
     const TriangleCorners c = corners[t];
     const Vec3 n = face_normal(c[0], c[1], c[2]);
     if (!is_zero(n)) {
       const auto at = [&](std::uint32_t i) { return c[(corner + i) % 3]; };
       terms.add(t, corner_angle(at(0), at(1), at(2)) * n);
     }
-    const std::uint32_t e = incidence_.edge_of_slot[out];
-    const std::uint32_t first = incidence_.slots[incidence_.edge_begin[e]];
-    const std::uint32_t in = first == out ? incidence_.slots[incidence_.edge_begin[e] + 1] : first;
+    const std::uint32_t in = partner_[out];
     t = in / 3;
     if (t == triangle) break;
     // Leave the next triangle by its other slot at v: v starts slot `corner` and ends slot
@@ -232,10 +241,16 @@ Vec3 FanPseudonormals::vertex(const Mesh& mesh, std::size_t triangle, int k) con
   return terms.normalized_sum();
 }
 
+// The two faces' normals added in slot order from zero, as edge_sum adds an edge's.
 Vec3 FanPseudonormals::edge(MeshCorners corners, std::size_t triangle, int k) const {
-  const std::uint32_t e = incidence_.edge_of_slot[3 * triangle + static_cast<std::size_t>(k)];
-  if (e == kNoEdge) return Vec3(0, 0, 0);
-  return edge_sum(incidence_, e, [&](std::size_t f) { return face_normal_of(corners, f); });
+  const auto slot = static_cast<std::uint32_t>(3 * triangle + static_cast<std::size_t>(k));
+  const std::uint32_t other = partner_[slot];
+  Vec3 sum(0, 0, 0);
+  for (const std::uint32_t s : {std::min(slot, other), std::max(slot, other)}) {
+    const Vec3 n = face_normal_of(corners, s / 3);
+    if (!is_zero(n)) sum += n;
+  }
+  return normalized(sum);
 }
 
 }  // namespace ncv

@@ -59,8 +59,10 @@ bool fans_walkable(const EdgeIncidence& incidence, const TopologyReport& topolog
 // from zero, an edge's over its slots, as there.
 class FanPseudonormals {
  public:
-  // `incidence` of the mesh whose corners are passed to the queries below.
-  explicit FanPseudonormals(EdgeIncidence incidence) : incidence_(std::move(incidence)) {}
+  // From the edge incidence of a surface whose fans are walkable (fans_walkable), after any
+  // flip: each slot's partner across its edge is all that is kept (4 bytes a slot, where the
+  // incidence is 10; 21 MB less for the 1.25 M-triangle workpiece).
+  explicit FanPseudonormals(const EdgeIncidence& incidence);
 
   // `mesh` and `corners` are the surface's (after any flip, as `incidence`).
   static Vec3 face(MeshCorners corners, std::size_t triangle);
@@ -70,7 +72,7 @@ class FanPseudonormals {
   Vec3 edge(MeshCorners corners, std::size_t triangle, int k) const;
 
  private:
-  EdgeIncidence incidence_;
+  Buffer<std::uint32_t> partner_;  // per slot: the other slot on its edge
 };
 
 }  // namespace ncv

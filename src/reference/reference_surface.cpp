@@ -133,7 +133,7 @@ ReferenceSurface::ReferenceSurface(const Mesh& mesh, const std::string& source,
 void ReferenceSurface::compute_normals(EdgeIncidence& incidence, SurfaceHolding holding) {
   if (holding == SurfaceHolding::arrays || !holds_as_halfedge_mesh(local_, topology_)) {
     if (fans_walkable(incidence, topology_)) {
-      fans_.emplace(std::move(incidence));
+      fans_.emplace(incidence);
     } else {
       normals_ = array_pseudonormals(local_, std::move(incidence));
     }
