@@ -1,5 +1,7 @@
 #include "files/grid_file.hpp"
 
+#include <limits>
+
 #include "files/mesh_arrays.hpp"
 #include "geometry/point_json.hpp"
 #include "util/parallel_over.hpp"
@@ -207,8 +209,13 @@ IndexedReference load_indexed_reference(const Container& c) {
   if (!cells) c.fail("grid dimensions overflow");
   const std::vector<std::uint32_t> counts = c.get_counts("cell_counts", *cells);
   g.grid.cell_offsets.assign(counts.size() + 1, 0);
+  std::uint64_t references = 0;
   for (std::size_t cell = 0; cell < counts.size(); ++cell) {
-    g.grid.cell_offsets[cell + 1] = g.grid.cell_offsets[cell] + counts[cell];
+    references += counts[cell];
+    if (references > std::numeric_limits<std::uint32_t>::max()) {
+      c.fail("grid has 2^32 or more references");
+    }
+    g.grid.cell_offsets[cell + 1] = static_cast<std::uint32_t>(references);
   }
   g.grid.cell_triangles =
       c.get<std::uint32_t, Buffer<std::uint32_t>>("cell_triangles", c.count("/grid/references"));

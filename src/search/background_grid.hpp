@@ -32,7 +32,9 @@ struct BackgroundGrid {
   Vec3 origin{0, 0, 0};
   double cell_size = 0;
   std::array<std::uint32_t, 3> dims{0, 0, 0};
-  Buffer<std::uint64_t> cell_offsets;    // cell count + 1
+  // cell count + 1; 32 bits, as the builder keeps the references below 2^32 and a grid file
+  // with more is refused
+  Buffer<std::uint32_t> cell_offsets;
   Buffer<std::uint32_t> cell_triangles;  // triangle indices, grouped by cell
 
   // dims[0] * dims[1] * dims[2], or nothing when it does not fit 64 bits. A loader calls

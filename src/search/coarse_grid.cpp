@@ -45,7 +45,7 @@ BackgroundGrid coarsen(const BackgroundGrid& fine) {
   parallel_over(cells, 1 << 10, [&](std::size_t c) {
     thread_local std::vector<std::uint32_t> list;
     merged_list(fine, coarse, c, list);
-    coarse.cell_offsets[c + 1] = list.size();
+    coarse.cell_offsets[c + 1] = static_cast<std::uint32_t>(list.size());
   });
   std::partial_sum(coarse.cell_offsets.begin(), coarse.cell_offsets.end(),
                    coarse.cell_offsets.begin());

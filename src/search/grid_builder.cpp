@@ -250,7 +250,7 @@ void fill_cell_lists(BackgroundGrid& grid, const std::vector<ReferenceChunk>& ch
       }
     }
   };
-  BucketPositions<std::uint64_t, kSortGroups> positions(
+  BucketPositions<std::uint32_t, kSortGroups> positions(
       grid.cell_count(), [&](std::size_t g, auto&& emit) {
         for_each_reference(g, [&](std::uint32_t cell, std::uint32_t) { emit(cell); });
       });
@@ -290,7 +290,7 @@ void summarise(const BackgroundGrid& grid, std::size_t triangles, GridStatistics
       });
   stats.empty_cells = sizes.empty;
   stats.max_cell_triangles = sizes.largest;
-  stats.bytes = grid.cell_offsets.size() * sizeof(std::uint64_t) +
+  stats.bytes = grid.cell_offsets.size() * sizeof(std::uint32_t) +
                 grid.cell_triangles.size() * sizeof(std::uint32_t);
   stats.cell_size = grid.cell_size;
 }
@@ -348,8 +348,11 @@ BackgroundGrid build_background_grid(const ReferenceSurface& nominal, const Grid
   const auto triangles = static_cast<std::uint64_t>(nominal.triangle_count());
   const double cell_budget =
       static_cast<double>(std::max(kCellsPerTriangle * triangles, kMinCellBudget));
+  // Below 2^32, so that the cell offsets fit 32 bits (16 a triangle would reach it at
+  // kMaxReferenceTriangles).
   const std::uint64_t reference_budget =
-      std::max(kReferencesPerTriangle * triangles, kMinReferenceBudget);
+      std::min<std::uint64_t>(std::max(kReferencesPerTriangle * triangles, kMinReferenceBudget),
+                              std::numeric_limits<std::uint32_t>::max());
   const BoundingBox& part = nominal.local_bounds();
   // No axis can ever use more than 2^31 cells (the cell budget is below that), so a cell
   // smaller than the part's extent / 2^31 grows at once: the cell counts stay finite.

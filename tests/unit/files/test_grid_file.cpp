@@ -1,7 +1,9 @@
 // The grid file keeps what grid-build computed of the nominal: its pseudonormals, topology
 // and boundary loops come back as they were, not rebuilt, and an older grid file is refused
 // with one clear line.
+#include <xxhash.h>
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <cstring>
 #include <fstream>
@@ -95,4 +97,51 @@ TEST_CASE("grid file: version 2 is refused in one line", "[grid-file]") {
           std::string::npos);
     CHECK(message.find('\n') == std::string::npos);
   }
+}
+
+TEST_CASE("grid file: cell counts summing to 2^32 references or more are refused", "[grid-file]") {
+  // Two cells, each listing all of a torus' 76,800 triangles (a valid grid): its counts are
+  // written four bytes each, then set to 2^32 - 1 and the file sealed again.
+  ncv::IndexedReference built = ncv::index_reference(fx::torus(40, 10, 320, 120), "part.stl");
+  const auto triangles = static_cast<std::uint32_t>(built.mesh->triangle_count());
+  REQUIRE(triangles > 65535);
+  ncv::BackgroundGrid& grid = built.grid;
+  grid.cell_size = 2 * grid.cell_size;
+  grid.dims = {2, 1, 1};
+  grid.cell_offsets = {0, triangles, 2 * triangles};
+  grid.cell_triangles.resize(2 * std::size_t{triangles});
+  for (std::uint32_t t = 0; t < triangles; ++t) {
+    grid.cell_triangles[t] = t;
+    grid.cell_triangles[triangles + t] = t;
+  }
+  const ScratchDir dir;
+  const std::string path = (dir.path() / "part.grid").string();
+  {
+    ncv::OutputFile out(path, ncv::OutputKind::binary);
+    ncv::write_grid_file(built, {}, out);
+    out.commit();
+  }
+  std::ifstream in(path, std::ios::binary);
+  ncv::Buffer<char> bytes;
+  for (std::istreambuf_iterator<char> it(in), end; it != end; ++it) bytes.push_back(*it);
+  std::uint64_t meta_bytes = 0;
+  std::memcpy(&meta_bytes, bytes.data() + 16, 8);
+  const nlohmann::json meta =
+      nlohmann::json::parse(std::string(bytes.data() + 64, bytes.data() + 64 + meta_bytes));
+  std::uint64_t offset = 0;
+  for (const nlohmann::json& section : meta["sections"]) {
+    if (section["name"] != "cell_counts") continue;
+    REQUIRE(section["dtype"] == "<u4");
+    offset = section["offset"].get<std::uint64_t>();
+  }
+  REQUIRE(offset > 0);
+  const std::uint32_t most = 0xFFFFFFFFu;
+  std::memcpy(bytes.data() + offset, &most, 4);
+  std::memcpy(bytes.data() + offset + 4, &most, 4);
+  const std::uint64_t hash = XXH3_64bits(bytes.data(), bytes.size() - 8);
+  std::memcpy(bytes.data() + bytes.size() - 8, &hash, 8);
+  CHECK_THROWS_MATCHES(
+      ncv::load_indexed_reference(ncv::Container::parse(
+          std::move(bytes), "x.grid", ncv::FileKind::grid, ncv::kGridFormatVersion)),
+      ncv::InputError, Catch::Message("x.grid: grid has 2^32 or more references"));
 }

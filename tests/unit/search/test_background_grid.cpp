@@ -254,7 +254,7 @@ TEST_CASE("grid statistics describe the grid", "[grid]") {
   CHECK(stats.references == grid.cell_triangles.size());
   CHECK(stats.references_per_triangle == Approx(static_cast<double>(stats.references) /
                                                 static_cast<double>(nominal.triangle_count())));
-  CHECK(stats.bytes == grid.cell_offsets.size() * 8 + grid.cell_triangles.size() * 4);
+  CHECK(stats.bytes == grid.cell_offsets.size() * 4 + grid.cell_triangles.size() * 4);
   CHECK(stats.cell_size == grid.cell_size);
   CHECK(stats.requested_cell_size == ncv::default_cell_size(nominal));
   std::uint64_t empty = 0, largest = 0;
@@ -413,12 +413,12 @@ TEST_CASE("grid validation rejects every kind of corruption", "[grid]") {
         ncv::BackgroundGrid pruned = g;
         pruned.cell_triangles.clear();
         for (std::size_t c = 0; c + 1 < g.cell_offsets.size(); ++c) {
-          pruned.cell_offsets[c] = pruned.cell_triangles.size();
+          pruned.cell_offsets[c] = static_cast<std::uint32_t>(pruned.cell_triangles.size());
           for (std::uint64_t r = g.cell_offsets[c]; r < g.cell_offsets[c + 1]; ++r) {
             if (g.cell_triangles[r] != 0) pruned.cell_triangles.push_back(g.cell_triangles[r]);
           }
         }
-        pruned.cell_offsets.back() = pruned.cell_triangles.size();
+        pruned.cell_offsets.back() = static_cast<std::uint32_t>(pruned.cell_triangles.size());
         g = pruned;
       },
       "a triangle in no cell");
