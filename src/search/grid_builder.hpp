@@ -30,15 +30,14 @@
 // removes candidates, so the bound is strict; an attempt stops as soon as the candidates
 // counted exceed the budget, and the cell then grows. The grid then never takes more than
 // 4 * 4 T + 4 * 16 T = 80 bytes per triangle (offsets and references of 4 bytes; the
-// references stay below 2^32 whatever T), and
-// the build at most 100 bytes per triangle more while it runs (the references once more, in
-// per-chunk vectors trimmed when done, and a count per triangle), plus
-// one growing chunk of 4096 triangles per thread. Four cells per triangle, not more: the
-// search costs the same per query over a wide range of cell sizes (0.2 to 1.0 mm measured
-// on a 1.6 M-triangle nominal whose default cell is 0.2 mm), while a cell costs an offset
-// of 4 bytes in memory and a count in the grid file and in the time to write it. At most one exact test per
-// candidate cell. The same bounds apply to a cell size given as an option; GridStatistics
-// says when it grew.
+// references stay below 2^32 whatever T), and the build at most 100 bytes per triangle more
+// while it runs (the references once more, in per-chunk vectors trimmed when done, and a
+// count per triangle), plus one growing chunk of 4096 triangles per thread. Four cells per
+// triangle, not more: the search costs the same per query over a wide range of cell sizes
+// (0.2 to 1.0 mm measured on a 1.6 M-triangle nominal whose default cell is 0.2 mm), while a
+// cell costs an offset of 4 bytes in memory, a count in the grid file and the time to write
+// it. At most one exact test per candidate cell. The same bounds apply to a cell size given
+// as an option; GridStatistics says when it grew.
 //
 // Parallel over triangles with oneTBB; the result does not depend on the thread count.
 #pragma once
