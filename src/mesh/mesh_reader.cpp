@@ -12,6 +12,7 @@
 
 #include "mesh/polygon_reader.hpp"
 #include "mesh/stl_reader.hpp"
+#include "mesh/vertex_order.hpp"
 #include "util/error.hpp"
 #include "util/input_bytes.hpp"
 
@@ -119,6 +120,7 @@ Mesh parse_mesh(std::span<const char> bytes, const std::string& source, MeshRead
   r = {};
   Mesh mesh = parse_by_content(bytes, source, r);
   check_mesh(mesh, source);
+  if (vertices_scattered(mesh)) order_vertices_spatially(mesh);
   r.degenerate_triangles = tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, mesh.triangle_count(), 1 << 14), std::size_t{0},
       [&](const tbb::blocked_range<std::size_t>& range, std::size_t degenerate) {

@@ -4,6 +4,8 @@
 //     vertices welded by exact coordinate equality (-0 = +0), first-seen order.
 //   PLY, OBJ, OFF: parsed strictly in double precision by polygon_reader (which says why
 //     not OpenMesh), the file's vertex indices kept, polygons fan-triangulated.
+// Either way, a large mesh whose numbering scatters (facets in random order) then has its
+// vertices renumbered in a spatial order (vertex_order.hpp); the triangles keep theirs.
 // Every fault (empty, truncated, size mismatch, NaN/Inf, no triangles, not a mesh) throws
 // InputError naming the source.
 #pragma once
