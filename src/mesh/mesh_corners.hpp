@@ -18,7 +18,6 @@ namespace ncv {
 
 class MeshCorners {
  public:
-  MeshCorners() = default;
   // A view of `mesh`, which must outlive it and keep its arrays unchanged.
   explicit MeshCorners(const Mesh& mesh)
       : vertices_(mesh.vertices.data()),
@@ -26,7 +25,6 @@ class MeshCorners {
         size_(mesh.triangle_count()) {}
 
   std::size_t size() const { return size_; }
-  bool empty() const { return size_ == 0; }
 
   TriangleCorners operator[](std::size_t t) const {
     const Triangle& c = triangles_[t];
@@ -37,9 +35,9 @@ class MeshCorners {
   void prefetch(std::size_t t) const { __builtin_prefetch(&triangles_[t]); }
 
  private:
-  const Vec3* vertices_ = nullptr;
-  const Triangle* triangles_ = nullptr;
-  std::size_t size_ = 0;
+  const Vec3* vertices_;
+  const Triangle* triangles_;
+  std::size_t size_;
 };
 
 }  // namespace ncv

@@ -11,10 +11,8 @@ TEST_CASE("a mesh's corners are its vertices in each triangle's index order", "[
   std::swap(mesh.triangles[5][1], mesh.triangles[5][2]);
   const ncv::MeshCorners corners(mesh);
   REQUIRE(corners.size() == mesh.triangle_count());
-  CHECK_FALSE(corners.empty());
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     const ncv::TriangleCorners c = corners[t];
     for (int k = 0; k < 3; ++k) CHECK(c[k] == mesh.vertices[mesh.triangles[t][k]]);
   }
-  CHECK(ncv::MeshCorners().empty());
 }
