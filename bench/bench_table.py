@@ -73,6 +73,17 @@ def median_run(workpiece, nominal, threads, reps=REPS, **kw):
     return summarise([run(workpiece, nominal, threads, **kw) for _ in range(reps)])
 
 
+def spaced_runs(workpiece, nominal, threads, reps=REPS, pause=1.0):
+    """Runs `pause` seconds apart, as a person takes them: on this project's machines a run
+    that follows another at once finds the pages it frees still backed by the host, one taken
+    a second later has them cleared and backed again (docs/PERFORMANCE.md)."""
+    runs = []
+    for _ in range(reps):
+        time.sleep(pause)
+        runs.append(run(workpiece, nominal, threads))
+    return summarise(runs)
+
+
 def paired_runs(workpiece, nominal, reps):
     """1- and 2-thread runs alternating, so that each pair sees the same machine; returns
     both summaries and the median of the pairs' distance-phase speed-ups."""
@@ -363,6 +374,7 @@ def main():
     fin2, _ = t1[("finishing", "all")]
     # The other generator's finishing part (the workloads issue 24 measured its whole run on).
     dfin2, _ = median_run(os.path.join(DECIMATED, "core_finishing.stl"), DECIMATED_NOMINAL, 2)
+    spaced2, _ = spaced_runs(os.path.join(LARGE, "core_finishing.stl"), NOMINAL, 2)
 
     p("== Stages (δ = 0.1 %, 2 threads; time in seconds; paper: Table 1) ==")
     p(f"{'stage':<14}{'scheme':<9}{'triangles':>10}{'samples':>10}{'small':>9}"
@@ -480,6 +492,8 @@ def main():
            fin2["total"] < 2)
     target("  two-sided (issue 19)", f"{fin2['total']:.3f} s", "< 1.0 s", fin2["total"] < 1.0)
     target("  two-sided (issue 24)", f"{fin2['total']:.3f} s", "<= 0.6 s", fin2["total"] <= 0.6)
+    target("  runs a second apart (issue 24)", f"{spaced2['total']:.3f} s", "<= 0.6 s",
+           spaced2["total"] <= 0.6)
     target("  decimated part (issue 24)", f"{dfin2['total']:.3f} s (certify "
            f"{dfin2['phases']['certify']:.3f} + {dfin2['phases'].get('reverse certify', 0):.3f})",
            "<= 0.6 s", dfin2["total"] <= 0.6)
