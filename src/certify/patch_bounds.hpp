@@ -19,7 +19,6 @@
 #include <functional>
 #include <limits>
 #include <span>
-#include <type_traits>
 #include <vector>
 
 #include "geometry/bounding_box.hpp"
@@ -111,9 +110,9 @@ class NearbyTriangles {
   // the cells but far from the patch is left out). When that grown box spans more than
   // `max_cells` cells: on a reference of at most `max_cells` triangles, every triangle whose
   // box (the same search_box) comes within `reach` instead (a few large faces, gridded
-  // finely for the search: grid_builder.hpp), else none, returning false. A visit that
-  // returns false (a caller whose cap is exceeded, for which the rest would change nothing)
-  // stops the scan, which then returns false too.
+  // finely for the search: grid_builder.hpp), else none, returning false. visit returns
+  // whether to go on: false (a caller whose cap is exceeded, for which the rest would change
+  // nothing) stops the scan, which then returns false too.
   template <class Visit>
   bool for_each(const Patch& patch, double reach, std::uint64_t max_cells, Visit&& visit) {
     BoundingBox box;
@@ -125,10 +124,6 @@ class NearbyTriangles {
   bool for_each(const BoundingBox& box, double reach, std::uint64_t max_cells, Visit&& visit);
 
  private:
-  // Visits t; false when the visit asks to stop.
-  template <class Visit>
-  static bool goes_on(Visit& visit, std::uint32_t t);
-
   const SearchIndex& index_;
   std::vector<std::uint32_t> stamps_;
   std::uint32_t epoch_ = 0;
@@ -164,16 +159,6 @@ void bound_by_nearby(Patch& patch, NearbyTriangles& nearby, const SideWitness& w
                      const NearbyTargets& targets, double slack, bool side_is_continuous);
 
 template <class Visit>
-bool NearbyTriangles::goes_on(Visit& visit, std::uint32_t t) {
-  if constexpr (std::is_same_v<std::invoke_result_t<Visit&, std::uint32_t>, bool>) {
-    return visit(t);
-  } else {
-    visit(t);
-    return true;
-  }
-}
-
-template <class Visit>
 bool NearbyTriangles::for_each(const BoundingBox& box, double reach, std::uint64_t max_cells,
                                Visit&& visit) {
   const BackgroundGrid& grid = index_.grid();
@@ -193,7 +178,7 @@ bool NearbyTriangles::for_each(const BoundingBox& box, double reach, std::uint64
     const MeshCorners triangles = index_.triangles();
     if (triangles.size() > max_cells) return false;
     for (std::uint32_t t = 0; t < triangles.size(); ++t) {
-      if (box_gap(box, search_box(triangles[t])) <= reach && !goes_on(visit, t)) return false;
+      if (box_gap(box, search_box(triangles[t])) <= reach && !visit(t)) return false;
     }
     return true;
   }
@@ -219,7 +204,7 @@ bool NearbyTriangles::for_each(const BoundingBox& box, double reach, std::uint64
           triangle_box.min = Vec3(block.lo[0][lane], block.lo[1][lane], block.lo[2][lane]);
           triangle_box.max = Vec3(block.hi[0][lane], block.hi[1][lane], block.hi[2][lane]);
           if (box_gap(box, triangle_box) > reach) continue;
-          if (!goes_on(visit, t)) return false;
+          if (!visit(t)) return false;
         }
       }
     }

@@ -74,7 +74,10 @@ std::optional<TriangleCover> TriangleCover::build(const TriangleCorners& triangl
   const BoundingBox box = BoundingBox::of(triangle);
   std::vector<std::uint32_t> near;
   if (!nearby.for_each(box, std::max(2 * options.cutoff, prism.high) + 2 * slack, options.max_cells,
-                       [&](std::uint32_t t) { near.push_back(t); })) {
+                       [&](std::uint32_t t) {
+                         near.push_back(t);
+                         return true;
+                       })) {
     return std::nullopt;
   }
   const MeshCorners reference = nearby.triangles();

@@ -116,7 +116,10 @@ TEST_CASE("gathering near triangles beyond the cell limit reads a small referenc
   for (const double reach : {0.1, 1.0, 3.0}) {
     CAPTURE(reach);
     std::vector<std::uint32_t> seen;
-    const auto visit = [&](std::uint32_t t) { seen.push_back(t); };
+    const auto visit = [&](std::uint32_t t) {
+      seen.push_back(t);
+      return true;
+    };
     // Through the cells (no limit), then over a limit the grown box exceeds.
     REQUIRE(nearby.for_each(around, reach, std::uint64_t{1} << 40, visit));
     std::sort(seen.begin(), seen.end());
