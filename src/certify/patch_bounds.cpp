@@ -93,7 +93,7 @@ std::vector<std::pair<std::size_t, std::size_t>> edge_sharing_pairs(
   };
   std::vector<Edge> edges;
   for (std::size_t i = 0; i < near.size(); ++i) {
-    const TriangleCorners& t = reference[near[i]];
+    const TriangleCorners t = reference[near[i]];
     for (int k = 0; k < 3; ++k) {
       Vec3 p = t[k], q = t[(k + 1) % 3];
       if (std::tie(q[0], q[1], q[2]) < std::tie(p[0], p[1], p[2])) std::swap(p, q);
@@ -129,12 +129,13 @@ double convex_upper_abs(const Patch& patch, MeshCorners reference, double enough
   for (int k = 0; k < 3; ++k) {
     const std::uint32_t t = c[k].face;
     if ((k > 0 && t == c[0].face) || (k > 1 && t == c[1].face)) continue;  // seen
+    const TriangleCorners triangle = reference[t];  // some other corner is measured against it
     double largest = 0;
     for (int m = 0; m < 3 && largest < best; ++m) {
       const double distance =
           c[m].face == t
               ? std::fabs(c[m].d)
-              : std::sqrt(closest_point_on_triangle(c[m].point, reference[t]).squared_distance);
+              : std::sqrt(closest_point_on_triangle(c[m].point, triangle).squared_distance);
       largest = std::max(largest, distance);
     }
     best = std::min(best, largest);
@@ -292,7 +293,7 @@ bool shadows_cover(MeshCorners reference, std::span<const std::uint32_t> cover, 
                                       0.5 * (middle + shrunk[1]), 0.5 * (middle + shrunk[2])};
   const bool some_inside = std::any_of(probes.begin(), probes.end(), [&](Vec3 probe) {
     return std::any_of(cover.begin(), cover.end(), [&](std::uint32_t t) {
-      const TriangleCorners& r = reference[t];
+      const TriangleCorners r = reference[t];
       return strictly_inside(probe, onto_plane(r[0]), onto_plane(r[1]), onto_plane(r[2]), n);
     });
   });
@@ -427,7 +428,7 @@ double nearby_upper_abs(const Patch& patch, NearbyTriangles& nearby, double widt
     if ((k > 0 && face == patch.corners[0].face) || (k > 1 && face == patch.corners[1].face)) {
       continue;
     }
-    const TriangleCorners& base = reference[face];
+    const TriangleCorners base = reference[face];
     const Vec3 normal = normalized(cross(base[1] - base[0], base[2] - base[0]));
     // A face parallel to one tried already gives the same covering.
     if (std::any_of(planes.begin(), planes.end(), [&](const std::pair<Vec3, Vec3>& plane) {
@@ -466,11 +467,10 @@ void prove_side(Patch& patch, NearbyTriangles& nearby, double slack) {
   for (const Vec3& p : corners) box.extend(p);
   std::size_t measured = 0;
   const bool scanned = nearby.for_each(patch, reach, kMaxNearbyCells, [&](std::uint32_t t) {
-    BoundingBox triangle_box;
-    for (const Vec3& p : reference[t]) triangle_box.extend(p);
-    if (box_gap(box, triangle_box) >= least) return true;
+    const TriangleCorners triangle = reference[t];
+    if (box_gap(box, BoundingBox::of(triangle)) >= least) return true;
     ++measured;
-    least = std::min(least, triangle_distance_lower_bound(corners, reference[t], slack));
+    least = std::min(least, triangle_distance_lower_bound(corners, triangle, slack));
     return least > 0 && measured <= kMaxSideCandidates;
   });
   if (!scanned || measured > kMaxSideCandidates || !(least > 0)) return;

@@ -31,7 +31,7 @@ std::vector<Vec3> points_below(const TriangleCorners& triangle, MeshCorners refe
     if (inside) found.emplace_back(std::fabs(h), p);
   };
   for (const std::uint32_t t : flat) {
-    const TriangleCorners& r = reference[t];
+    const TriangleCorners r = reference[t];
     // Its corners, and the middle of an edge whose two ends both stand out: a crest line
     // between two far corners.
     for (int k = 0; k < 3; ++k) {

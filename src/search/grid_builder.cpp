@@ -298,7 +298,7 @@ void summarise(const BackgroundGrid& grid, std::size_t triangles, GridStatistics
 double paper_cell_size(const ReferenceSurface& nominal) {
   const MeshCorners corners = nominal.corners();
   const double area = serial_sum(corners.size(), [&](std::size_t k) {
-    const TriangleCorners& t = corners[k];
+    const TriangleCorners t = corners[k];
     return 0.5 * norm(cross(t[1] - t[0], t[2] - t[0]));
   });
   const auto triangles = static_cast<double>(nominal.triangle_count());
