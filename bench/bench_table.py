@@ -69,18 +69,14 @@ def run(workpiece, nominal, threads, scheme="all", step="0.1%", extra=()):
             return json.load(f), json.loads(out.stdout)
 
 
-def median_run(workpiece, nominal, threads, reps=REPS, **kw):
-    return summarise([run(workpiece, nominal, threads, **kw) for _ in range(reps)])
-
-
-def spaced_runs(workpiece, nominal, threads, reps=REPS, pause=1.0):
-    """Runs `pause` seconds apart, as a person takes them: on this project's machines a run
-    that follows another at once finds the pages it frees still backed by the host, one taken
-    a second later has them cleared and backed again (docs/PERFORMANCE.md)."""
+def median_run(workpiece, nominal, threads, reps=REPS, pause=0.0, **kw):
+    """Runs back to back, or `pause` seconds apart as a person takes them: on this project's
+    machines a run that follows another at once finds the pages it frees still backed by the
+    host, one taken a second later has them cleared and backed again (docs/PERFORMANCE.md)."""
     runs = []
     for _ in range(reps):
         time.sleep(pause)
-        runs.append(run(workpiece, nominal, threads))
+        runs.append(run(workpiece, nominal, threads, **kw))
     return summarise(runs)
 
 
@@ -374,7 +370,7 @@ def main():
     fin2, _ = t1[("finishing", "all")]
     # The other generator's finishing part (the workloads issue 24 measured its whole run on).
     dfin2, _ = median_run(os.path.join(DECIMATED, "core_finishing.stl"), DECIMATED_NOMINAL, 2)
-    spaced2, _ = spaced_runs(os.path.join(LARGE, "core_finishing.stl"), NOMINAL, 2)
+    spaced2, _ = median_run(os.path.join(LARGE, "core_finishing.stl"), NOMINAL, 2, pause=1.0)
 
     p("== Stages (δ = 0.1 %, 2 threads; time in seconds; paper: Table 1) ==")
     p(f"{'stage':<14}{'scheme':<9}{'triangles':>10}{'samples':>10}{'small':>9}"
