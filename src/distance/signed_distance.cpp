@@ -14,6 +14,8 @@
 
 #include "distance/side_rule.hpp"
 #include "search/closest_point_search.hpp"
+#include "search/group_search.hpp"
+#include "search/query_order.hpp"
 #include "search/sample_searcher.hpp"
 #include "util/error.hpp"
 
@@ -47,10 +49,13 @@ void check_inputs(std::span<const Vec3> points, std::span<const Vec3> sample_nor
   }
 }
 
-// Everything one thread needs: a sample searcher (its grid searchers own the per-triangle
-// stamps) and its share of the counters.
+static_assert(kDistanceBlockSize <= kMostOrderedPoints);
+
+// Everything one thread needs: its searcher (which owns the per-triangle stamps) and its share
+// of the counters.
 struct Worker {
-  std::optional<SampleSearcher> search;
+  std::optional<GroupSearcher> groups;
+  std::optional<SampleSearcher> single;
   SearchCounters counters;
 };
 
@@ -61,18 +66,18 @@ class SignedDistanceJob {
                     const SideRule& side)
       : nominal_(nominal), grid_(grid), points_(points), normals_(normals), side_(side) {}
 
+  // Points begin..end, begin at a block's start; every block starts its search afresh.
   void run(DistanceField& field, std::size_t begin, std::size_t end) {
     Worker& worker = workers_.local();
-    if (grid_ && !worker.search) worker.search.emplace(*grid_);
-    const bool paper = side_.method() == SignMethod::paper;
-    for (std::size_t i = begin; i < end; ++i) {
-      if (worker.search && i % kDistanceBlockSize == 0) worker.search->forget();
-      const Vec3 p = nominal_.to_local(points_[i]);
-      const ClosestHit hit = worker.search
-                                 ? worker.search->closest(p, worker.counters)
-                                 : brute_force_closest(nominal_.corners(), p, worker.counters);
-      field.distance[i] = side_.signed_value(p, hit, paper ? normals_[i] : Vec3(0, 0, 0));
-      field.closest_face[i] = hit.triangle;
+    for (std::size_t block = begin; block < end; block += kDistanceBlockSize) {
+      const std::size_t count = std::min(kDistanceBlockSize, end - block);
+      if (grid_ && grid_->groups_pay()) {
+        if (!worker.groups) worker.groups.emplace(*grid_);
+        measure_in_groups(field, block, count, worker);
+      } else {
+        if (grid_ && !worker.single) worker.single.emplace(*grid_);
+        measure_one_by_one(field, block, count, worker);
+      }
     }
   }
 
@@ -87,6 +92,44 @@ class SignedDistanceJob {
   }
 
  private:
+  // A block of points in its spatial order (query_order.hpp), in groups of consecutive ones
+  // (group_search.hpp).
+  void measure_in_groups(DistanceField& field, std::size_t block, std::size_t count,
+                         Worker& worker) {
+    std::array<Vec3, kDistanceBlockSize> local;
+    std::array<std::uint16_t, kDistanceBlockSize> order;
+    std::array<Vec3, kDistanceBlockSize> queries;
+    std::array<ClosestHit, kDistanceBlockSize> hits;
+    for (std::size_t k = 0; k < count; ++k) local[k] = nominal_.to_local(points_[block + k]);
+    spatial_order({local.data(), count}, {order.data(), count});
+    for (std::size_t k = 0; k < count; ++k) queries[k] = local[order[k]];
+    worker.groups->forget();
+    for (std::size_t k = 0; k < count;) {
+      k += worker.groups->closest({queries.data() + k, count - k}, {hits.data() + k, count - k},
+                                  worker.counters);
+    }
+    for (std::size_t k = 0; k < count; ++k) store(field, block + order[k], queries[k], hits[k]);
+  }
+
+  // A block of points in their order, each from its predecessor's closest triangle (over the
+  // grid), or by brute force.
+  void measure_one_by_one(DistanceField& field, std::size_t block, std::size_t count,
+                          Worker& worker) {
+    if (worker.single) worker.single->forget();
+    for (std::size_t i = block; i < block + count; ++i) {
+      const Vec3 p = nominal_.to_local(points_[i]);
+      store(field, i, p,
+            worker.single ? worker.single->closest(p, worker.counters)
+                          : brute_force_closest(nominal_.corners(), p, worker.counters));
+    }
+  }
+
+  void store(DistanceField& field, std::size_t i, Vec3 local, const ClosestHit& hit) const {
+    const Vec3 normal = side_.method() == SignMethod::paper ? normals_[i] : Vec3(0, 0, 0);
+    field.distance[i] = side_.signed_value(local, hit, normal);
+    field.closest_face[i] = hit.triangle;
+  }
+
   const ReferenceSurface& nominal_;
   const SearchIndex* grid_;
   std::span<const Vec3> points_;

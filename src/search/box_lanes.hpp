@@ -107,4 +107,63 @@ inline unsigned near_lanes(const BoxBlock& block, const LaneQuery& query,
 #endif
 }
 
+// The same test with a box [lo, hi] of queries in place of the point (the group search,
+// group_search.hpp): the box is rounded outward to floats, so each float gap is at most the
+// exact gap to it plus one subtraction's rounding, inside the analysis above.
+struct LaneBox {
+#if defined(__SSE2__)
+  __m128 lo[3];
+  __m128 hi[3];
+  __m128 limit;
+#else
+  float lo[3];
+  float hi[3];
+  float limit;
+#endif
+};
+
+inline LaneBox lane_box(const float lo[3], const float hi[3], float limit) {
+#if defined(__SSE2__)
+  return {{_mm_set1_ps(lo[0]), _mm_set1_ps(lo[1]), _mm_set1_ps(lo[2])},
+          {_mm_set1_ps(hi[0]), _mm_set1_ps(hi[1]), _mm_set1_ps(hi[2])},
+          _mm_set1_ps(limit)};
+#else
+  return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}, limit};
+#endif
+}
+
+inline unsigned near_lanes_scalar(const BoxBlock& block, const float lo[3], const float hi[3],
+                                  float limit, float squared[kBoxLanes]) {
+  unsigned near = 0;
+  for (int lane = 0; lane < kBoxLanes; ++lane) {
+    float sum = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      const float below = block.lo[axis][lane] - hi[axis];
+      const float above = lo[axis] - block.hi[axis][lane];
+      const float gap = std::max(std::max(below, above), 0.0f);
+      sum = axis == 0 ? gap * gap : sum + gap * gap;
+    }
+    squared[lane] = sum;
+    if (sum <= limit) near |= 1u << lane;
+  }
+  return near;
+}
+
+inline unsigned near_lanes(const BoxBlock& block, const LaneBox& box, float squared[kBoxLanes]) {
+#if defined(__SSE2__)
+  const __m128 zero = _mm_setzero_ps();
+  __m128 sum = zero;
+  for (int axis = 0; axis < 3; ++axis) {
+    const __m128 below = _mm_sub_ps(_mm_load_ps(block.lo[axis]), box.hi[axis]);
+    const __m128 above = _mm_sub_ps(box.lo[axis], _mm_load_ps(block.hi[axis]));
+    const __m128 gap = _mm_max_ps(_mm_max_ps(below, above), zero);
+    sum = axis == 0 ? _mm_mul_ps(gap, gap) : _mm_add_ps(sum, _mm_mul_ps(gap, gap));
+  }
+  _mm_storeu_ps(squared, sum);
+  return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(sum, box.limit)));
+#else
+  return near_lanes_scalar(block, box.lo, box.hi, box.limit, squared);
+#endif
+}
+
 }  // namespace ncv

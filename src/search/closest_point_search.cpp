@@ -10,8 +10,6 @@
 namespace ncv {
 namespace {
 
-constexpr double kMarginScale = 0x1p-30;
-
 double gap(double q, double lo, double hi) {
   return std::max(std::max(lo - q, q - hi), 0.0);
 }
@@ -66,7 +64,7 @@ struct GridSearcher::Query {
   std::array<std::int64_t, 3> centre;  // cell of the query, clamped to the grid
   std::array<std::int64_t, 3> lo, hi;  // visited box, inclusive cell indices
   double scale = 0;                    // coordinate scale of the query and the grid
-  double margin = 0;                   // kMarginScale * scale
+  double margin = 0;                   // kSearchMarginScale * scale
   double bound_sq = std::numeric_limits<double>::infinity();  // (best + margin)^2
   // The float box prefilter (box_lanes.hpp): the query in float and the bound as a float
   // limit; without it (coordinates out of its range), every box passes.
@@ -103,7 +101,7 @@ ClosestHit GridSearcher::closest(Vec3 q, SearchCounters& counters) {
   query.at = {q[0], q[1], q[2]};
   query.counters = &counters;
   query.scale = std::max(scale_, max_abs(q));
-  query.margin = kMarginScale * query.scale;
+  query.margin = kSearchMarginScale * query.scale;
   query.filter = box_filter_usable(query.scale);
   for (int axis = 0; axis < 3; ++axis) query.point[axis] = static_cast<float>(query.at[axis]);
   for (int axis = 0; axis < 3; ++axis) {

@@ -60,6 +60,10 @@ namespace ncv {
 
 inline constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
 
+// The margin of the stopping rule and of the prefilters, in units of the coordinate scale of
+// the query and the grid (see above).
+inline constexpr double kSearchMarginScale = 0x1p-30;
+
 struct ClosestHit {
   Vec3 point{0, 0, 0};  // in the frame of the triangles
   double squared_distance = std::numeric_limits<double>::infinity();

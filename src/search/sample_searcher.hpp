@@ -23,6 +23,8 @@ class SampleSearcher {
   explicit SampleSearcher(const SearchIndex& index);
 
   ClosestHit closest(Vec3 q, SearchCounters& counters);
+  // The next query starts with triangle t (or without a hint: kNoTriangle).
+  void set_hint(std::uint32_t t) { hint_ = t; }
   // The next query starts afresh: no hint, the grid's own level.
   void forget() {
     hint_ = kNoTriangle;

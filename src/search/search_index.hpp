@@ -27,6 +27,7 @@ namespace ncv {
 enum class GridLevel { fine, coarse };
 
 inline constexpr std::uint64_t kMostCoarseReferences = std::uint64_t{1} << 20;
+inline constexpr double kMostGroupedReferences = 12;
 
 class SearchIndex {
  public:
@@ -39,6 +40,15 @@ class SearchIndex {
   std::span<const BoxBlock> boxes() const { return boxes_; }
 
   bool has_coarse_level() const { return coarse_.has_value(); }
+
+  // Whether runs of nearby queries are searched faster together (group_search.hpp) than one
+  // by one: where the grid's cells that hold triangles hold few, kMostGroupedReferences a
+  // cell on average. A group's box spans about a cell and meets about that many triangles;
+  // every one it cannot rule out by box is measured on a vector of points. Measured, the
+  // distance step, one thread, ns a sample, groups / one by one: 17 k nominal (6.3 a cell)
+  // 81 / 125, 175 k (7.5) 172 / 203, 968 k (10.4) 307 / 310, the finishing workpiece as
+  // the reverse direction's reference (19.1) 0.30 / 0.20 s (docs/PERFORMANCE.md).
+  bool groups_pay() const { return groups_pay_; }
   // The level's grid and boxes; the coarse one only when has_coarse_level().
   const BackgroundGrid& grid(GridLevel level) const {
     return level == GridLevel::fine ? grid() : *coarse_;
@@ -50,6 +60,7 @@ class SearchIndex {
  private:
   const IndexedReference* reference_;
   Buffer<BoxBlock> boxes_;
+  bool groups_pay_ = false;
   std::optional<BackgroundGrid> coarse_;
   Buffer<BoxBlock> coarse_boxes_;
 };

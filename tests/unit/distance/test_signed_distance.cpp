@@ -369,7 +369,9 @@ TEST_CASE("search statistics count queries, triangles and cells", "[distance]") 
   CHECK(brute.cells_visited == 0);
   CHECK(brute.triangles_per_query() == Approx(static_cast<double>(mesh.triangle_count())));
   CHECK(fast.queries == 500);
-  CHECK(fast.cells_visited >= 500);
+  // Queries searched together share the cells they read: some, fewer than one a query.
+  CHECK(fast.cells_visited > 0);
+  CHECK(fast.cells_visited < 500);
   CHECK(fast.triangles_per_query() >= 1);
   CHECK(fast.triangles_per_query() < 0.1 * static_cast<double>(mesh.triangle_count()));
 }
