@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <thread>
@@ -10,7 +11,6 @@
 #include <fmt/format.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_reduce.h>
 
 #include "distance/side_rule.hpp"
 #include "search/closest_point_search.hpp"
@@ -22,25 +22,8 @@
 namespace ncv {
 namespace {
 
-void check_inputs(std::span<const Vec3> points, std::span<const Vec3> sample_normals,
-                  SignMethod method) {
-  // The first bad point, found in parallel (the lowest index, whatever the thread count).
-  const std::size_t bad = tbb::parallel_reduce(
-      tbb::blocked_range<std::size_t>(0, points.size(), 1 << 14), points.size(),
-      [&](const tbb::blocked_range<std::size_t>& range, std::size_t first) {
-        for (std::size_t i = range.begin(); i < range.end() && i < first; ++i) {
-          const Vec3 p = points[i];
-          if (!is_finite(p) || max_abs(p) > kMaxCoordinate) {
-            return i;
-          }
-        }
-        return first;
-      },
-      [](std::size_t a, std::size_t b) { return std::min(a, b); });
-  if (bad < points.size()) {
-    throw InputError("query points",
-                     fmt::format("point {} is not finite or beyond {}", bad, kMaxCoordinate));
-  }
+void check_normals(std::span<const Vec3> points, std::span<const Vec3> sample_normals,
+                   SignMethod method) {
   if (method == SignMethod::paper && sample_normals.size() != points.size()) {
     throw UsageError(
         fmt::format("the paper's sign rule needs one sample normal per point ({} "
@@ -49,14 +32,23 @@ void check_inputs(std::span<const Vec3> points, std::span<const Vec3> sample_nor
   }
 }
 
+bool usable(const Vec3& p) {
+  return is_finite(p) && max_abs(p) <= kMaxCoordinate;
+}
+
 static_assert(kDistanceBlockSize <= kMostOrderedPoints);
 
-// Everything one thread needs: its searcher (which owns the per-triangle stamps) and its share
-// of the counters.
+// Everything one thread needs: its searcher (which owns the per-triangle stamps), its share
+// of the counters, and a block's points in the order searched and their hits (made once: a
+// hit's default values written for every block were a tenth of the uncut slot's step).
 struct Worker {
   std::optional<GroupSearcher> groups;
   std::optional<SampleSearcher> single;
   SearchCounters counters;
+  std::array<std::uint16_t, kDistanceBlockSize> order;
+  std::array<Vec3, kDistanceBlockSize> local;
+  std::array<Vec3, kDistanceBlockSize> queries;
+  std::array<ClosestHit, kDistanceBlockSize> hits;
 };
 
 class SignedDistanceJob {
@@ -66,11 +58,13 @@ class SignedDistanceJob {
                     const SideRule& side)
       : nominal_(nominal), grid_(grid), points_(points), normals_(normals), side_(side) {}
 
-  // Points begin..end, begin at a block's start; every block starts its search afresh.
+  // Points begin..end, begin at a block's start; every block starts its search afresh. A
+  // block holding an unusable point is not measured (first_unusable() names the lowest).
   void run(DistanceField& field, std::size_t begin, std::size_t end) {
     Worker& worker = workers_.local();
     for (std::size_t block = begin; block < end; block += kDistanceBlockSize) {
       const std::size_t count = std::min(kDistanceBlockSize, end - block);
+      if (!to_local(block, count, worker)) continue;
       if (grid_ && grid_->groups_pay()) {
         if (!worker.groups) worker.groups.emplace(*grid_);
         measure_in_groups(field, block, count, worker);
@@ -79,6 +73,12 @@ class SignedDistanceJob {
         measure_one_by_one(field, block, count, worker);
       }
     }
+  }
+
+  // The lowest index of a point that is not finite or lies beyond kMaxCoordinate, or none.
+  std::optional<std::size_t> first_unusable() const {
+    const std::size_t first = first_unusable_.load();
+    return first < points_.size() ? std::optional<std::size_t>(first) : std::nullopt;
   }
 
   SearchCounters counters() {
@@ -92,15 +92,35 @@ class SignedDistanceJob {
   }
 
  private:
+  // The block's points in the surface's frame, into worker.local; false (and the first
+  // unusable point noted) when one is unusable, checked in the same pass as the points are
+  // read (a pass of its own read the 30 MB of a paper-scale job's points again).
+  bool to_local(std::size_t block, std::size_t count, Worker& worker) {
+    bool all = true;
+    for (std::size_t k = 0; k < count; ++k) {
+      const Vec3 p = points_[block + k];
+      all &= usable(p);
+      worker.local[k] = nominal_.to_local(p);
+    }
+    if (all) return true;
+    for (std::size_t k = 0; k < count; ++k) {
+      if (usable(points_[block + k])) continue;
+      std::size_t first = first_unusable_.load();
+      while (block + k < first && !first_unusable_.compare_exchange_weak(first, block + k)) {
+      }
+      break;
+    }
+    return false;
+  }
+
   // A block of points in its spatial order (query_order.hpp), in groups of consecutive ones
   // (group_search.hpp).
   void measure_in_groups(DistanceField& field, std::size_t block, std::size_t count,
                          Worker& worker) {
-    std::array<Vec3, kDistanceBlockSize> local;
-    std::array<std::uint16_t, kDistanceBlockSize> order;
-    std::array<Vec3, kDistanceBlockSize> queries;
-    std::array<ClosestHit, kDistanceBlockSize> hits;
-    for (std::size_t k = 0; k < count; ++k) local[k] = nominal_.to_local(points_[block + k]);
+    auto& order = worker.order;
+    auto& local = worker.local;
+    auto& queries = worker.queries;
+    auto& hits = worker.hits;
     spatial_order({local.data(), count}, {order.data(), count});
     for (std::size_t k = 0; k < count; ++k) queries[k] = local[order[k]];
     worker.groups->forget();
@@ -116,9 +136,9 @@ class SignedDistanceJob {
   void measure_one_by_one(DistanceField& field, std::size_t block, std::size_t count,
                           Worker& worker) {
     if (worker.single) worker.single->forget();
-    for (std::size_t i = block; i < block + count; ++i) {
-      const Vec3 p = nominal_.to_local(points_[i]);
-      store(field, i, p,
+    for (std::size_t k = 0; k < count; ++k) {
+      const Vec3 p = worker.local[k];
+      store(field, block + k, p,
             worker.single ? worker.single->closest(p, worker.counters)
                           : brute_force_closest(nominal_.corners(), p, worker.counters));
     }
@@ -136,6 +156,7 @@ class SignedDistanceJob {
   std::span<const Vec3> normals_;
   const SideRule& side_;
   tbb::enumerable_thread_specific<Worker> workers_;
+  std::atomic<std::size_t> first_unusable_{std::numeric_limits<std::size_t>::max()};
 };
 
 }  // namespace
@@ -150,7 +171,7 @@ DistanceField measure(const ReferenceSurface& nominal, const SearchIndex* grid,
                       std::span<const Vec3> points, std::span<const Vec3> sample_normals,
                       const SideRule& side, SearchStatistics* statistics,
                       const DistanceProgress& progress) {
-  check_inputs(points, sample_normals, side.method());
+  check_normals(points, sample_normals, side.method());
   const std::size_t n = points.size();
   DistanceField field;
   field.distance.resize(n);
@@ -168,6 +189,10 @@ DistanceField measure(const ReferenceSurface& nominal, const SearchIndex* grid,
                       const std::size_t finished = done += end - begin;
                       if (progress && std::this_thread::get_id() == caller) progress(finished, n);
                     });
+  if (const std::optional<std::size_t> bad = job.first_unusable()) {
+    throw InputError("query points",
+                     fmt::format("point {} is not finite or beyond {}", *bad, kMaxCoordinate));
+  }
   if (progress) progress(n, n);
 
   if (statistics) {
