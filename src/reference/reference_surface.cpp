@@ -167,21 +167,4 @@ void ReferenceSurface::choose_sign_method(const std::string& source) {
       source, winding_reason_);
 }
 
-Vec3 ReferenceSurface::pseudonormal(std::size_t triangle, TriangleFeature feature) const {
-  if (is_vertex(feature)) {
-    if (fans_) return fans_->vertex(local_, triangle, vertex_index(feature));
-    return normals_.vertex[local_.triangles[triangle][vertex_index(feature)]];
-  }
-  if (is_edge(feature)) {
-    if (fans_) return fans_->edge(corners(), triangle, edge_index(feature));
-    const std::uint32_t edge = normals_.edge_of_slot[3 * triangle + edge_index(feature)];
-    return edge == kNoEdge ? Vec3(0, 0, 0) : normals_.edge[edge];
-  }
-  return face_normal(triangle);
-}
-
-Vec3 ReferenceSurface::face_normal(std::size_t triangle) const {
-  return fans_ ? FanPseudonormals::face(corners(), triangle) : normals_.face[triangle];
-}
-
 }  // namespace ncv

@@ -109,10 +109,23 @@ class ReferenceSurface {
   const std::string& winding_reason() const { return winding_reason_; }
 
   // Unit normal, or zero for a degenerate face.
-  Vec3 face_normal(std::size_t triangle) const;
+  Vec3 face_normal(std::size_t triangle) const {
+    return fans_ ? FanPseudonormals::face(corners(), triangle) : normals_.face[triangle];
+  }
   // Unit pseudonormal of a feature of a triangle; zero when it has none (only degenerate
-  // faces around it, or faces that cancel).
-  Vec3 pseudonormal(std::size_t triangle, TriangleFeature feature) const;
+  // faces around it, or faces that cancel). Inline: the distance step asks for one a sample.
+  Vec3 pseudonormal(std::size_t triangle, TriangleFeature feature) const {
+    if (is_vertex(feature)) {
+      if (fans_) return fans_->vertex(local_, triangle, vertex_index(feature));
+      return normals_.vertex[local_.triangles[triangle][vertex_index(feature)]];
+    }
+    if (is_edge(feature)) {
+      if (fans_) return fans_->edge(corners(), triangle, edge_index(feature));
+      const std::uint32_t edge = normals_.edge_of_slot[3 * triangle + edge_index(feature)];
+      return edge == kNoEdge ? Vec3(0, 0, 0) : normals_.edge[edge];
+    }
+    return face_normal(triangle);
+  }
 
  private:
   void enter_local_frame(const Mesh& mesh, const std::string& source);
