@@ -121,8 +121,15 @@ class SignedDistanceJob {
     auto& local = worker.local;
     auto& queries = worker.queries;
     auto& hits = worker.hits;
-    spatial_order({local.data(), count}, {order.data(), count});
-    for (std::size_t k = 0; k < count; ++k) queries[k] = local[order[k]];
+    if (runs_lie_apart({local.data(), count}, kGroupSize, 0.5 * worker.groups->reach())) {
+      spatial_order({local.data(), count}, {order.data(), count});
+      for (std::size_t k = 0; k < count; ++k) queries[k] = local[order[k]];
+    } else {
+      for (std::size_t k = 0; k < count; ++k) {
+        order[k] = static_cast<std::uint16_t>(k);
+        queries[k] = local[k];
+      }
+    }
     worker.groups->forget();
     for (std::size_t k = 0; k < count;) {
       k += worker.groups->closest({queries.data() + k, count - k}, {hits.data() + k, count - k},

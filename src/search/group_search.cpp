@@ -2,6 +2,8 @@
 
 #include "search/group_search_state.hpp"
 
+#include <cmath>
+
 namespace ncv {
 namespace {
 
@@ -70,6 +72,10 @@ GroupSearcher::GroupSearcher(GroupSearcher&&) noexcept = default;
 std::size_t GroupSearcher::closest(std::span<const Vec3> queries, std::span<ClosestHit> hits,
                                    SearchCounters& counters) {
   return search_(*state_, queries, hits, counters);
+}
+
+double GroupSearcher::reach() const {
+  return std::sqrt(state_->reach_sq);
 }
 
 void GroupSearcher::forget() {

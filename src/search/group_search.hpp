@@ -57,6 +57,8 @@ class GroupSearcher {
                       SearchCounters& counters);
   // The next group starts afresh (from one point's own search).
   void forget();
+  // The most a group spans across.
+  double reach() const;
 
   struct State;
 

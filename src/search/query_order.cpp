@@ -35,6 +35,20 @@ void starts(std::array<std::uint32_t, kPassBuckets>& counts) {
 
 }  // namespace
 
+bool runs_lie_apart(std::span<const Vec3> points, std::size_t run, double reach) {
+  std::size_t runs = 0, apart = 0;
+  for (std::size_t begin = 0; begin < points.size(); begin += run, ++runs) {
+    const std::size_t end = std::min(points.size(), begin + run);
+    Vec3 lo = points[begin], hi = lo;
+    for (std::size_t k = begin + 1; k < end; ++k) {
+      lo = component_min(lo, points[k]);
+      hi = component_max(hi, points[k]);
+    }
+    apart += squared_norm(hi - lo) > reach * reach;
+  }
+  return 4 * apart > runs;
+}
+
 void spatial_order(std::span<const Vec3> points, std::span<std::uint16_t> order) {
   const std::size_t n = points.size();
   double lo[3], hi[3];

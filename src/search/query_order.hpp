@@ -18,6 +18,10 @@ namespace ncv {
 // The most points spatial_order takes.
 inline constexpr std::size_t kMostOrderedPoints = 4096;
 
+// Whether the points in their own order are worth ordering for runs of `run` consecutive
+// ones: more than a quarter of those runs span more than `reach` across.
+bool runs_lie_apart(std::span<const Vec3> points, std::size_t run, double reach);
+
 // order[k] = the index of the k-th point to search (a permutation of 0 .. points.size() - 1);
 // points.size() <= kMostOrderedPoints, order.size() == points.size().
 void spatial_order(std::span<const Vec3> points, std::span<std::uint16_t> order);

@@ -189,6 +189,12 @@ TEST_CASE("the spatial order is a permutation that brings neighbours together", 
   const double spatial = mean_group_span([&](std::size_t k) { return points[order[k]]; });
   CHECK(given >= 15);
   CHECK(spatial < 0.6 * given);
+  // The given order is worth ordering for runs that must stay within 10, not within 20.
+  CHECK(ncv::runs_lie_apart(points, 16, 10));
+  CHECK_FALSE(ncv::runs_lie_apart(points, 16, 20));
+  std::vector<Vec3> ordered(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) ordered[k] = points[order[k]];
+  CHECK_FALSE(ncv::runs_lie_apart(ordered, 16, 10));
 
   // The same points give the same order; one point, or all equal, keep their order.
   std::vector<std::uint16_t> again(points.size());
