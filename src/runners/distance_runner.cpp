@@ -133,8 +133,9 @@ void check_parts(const Mesh& workpiece, const std::string& workpiece_source, con
   warn_if_swapped(workpiece, workpiece_source, nominal, nominal_source);
 }
 
-DistanceSet measure_distances(SampleSet samples, const IndexedReference& reference,
+DistanceSet measure_distances(SampleSet samples, const SearchIndex& index,
                               const DistanceOptions& options, double* seconds) {
+  const IndexedReference& reference = index.reference();
   if (options.direction == Direction::forward) {
     refuse_if_apart(bounding_box(samples.mesh), samples.source, bounding_box(*reference.mesh),
                     reference.source);
@@ -158,7 +159,6 @@ DistanceSet measure_distances(SampleSet samples, const IndexedReference& referen
   Progress progress("distance", samples.sample_count());
   const auto report = [&](std::size_t done, std::size_t) { progress.update(done); };
   DistanceSet result;
-  const SearchIndex index(reference);
   const SideRule side(surface, method);
   if (options.brute_force) {
     result.field =
@@ -220,9 +220,9 @@ void run_distance(const DistanceJob& job) {
   } else {
     check_parts(*reference.mesh, reference.source, samples.mesh, samples.source);
   }
+  const SearchIndex index(reference);
   double seconds = 0;
-  const DistanceSet result =
-      measure_distances(std::move(samples), reference, job.options, &seconds);
+  const DistanceSet result = measure_distances(std::move(samples), index, job.options, &seconds);
   write_distance_file(result, link_samples(job.samples, samples_file.content_hash(), job.output),
                       out);
   out.commit();

@@ -12,6 +12,7 @@
 #include "reference/sign_method.hpp"
 #include "sampling/sampling.hpp"
 #include "search/indexed_reference.hpp"
+#include "search/search_index.hpp"
 
 namespace ncv {
 
@@ -38,8 +39,9 @@ void refuse_if_apart(const BoundingBox& workpiece, const std::string& workpiece_
 void check_parts(const Mesh& workpiece, const std::string& workpiece_source, const Mesh& nominal,
                  const std::string& nominal_source);
 
-// The refusal, then measures every sample; `seconds` receives the time the measuring took.
-DistanceSet measure_distances(SampleSet samples, const IndexedReference& reference,
+// The refusal, then measures every sample against the index's reference; `seconds` receives
+// the time the measuring took.
+DistanceSet measure_distances(SampleSet samples, const SearchIndex& index,
                               const DistanceOptions& options, double* seconds = nullptr);
 // Samples per second, triangles tested per sample and the sign method, on stderr.
 void log_distances(const DistanceSet& distances, double seconds);

@@ -113,13 +113,14 @@ DistanceSet measure_direction(Mesh sampled_mesh, const std::string& sampled_sour
       index_surface(std::move(reference_mesh), reference_source, options.grid,
                     direction == Direction::reverse ? SurfaceHolding::arrays
                                                     : SurfaceHolding::halfedges_where_possible);
+  // The search's boxes belong to the index, as the grid does (timed with it).
+  const SearchIndex search(indexed.reference);
   if (hooks.indexed) hooks.indexed(indexed, direction);
   DistanceOptions distance = options.distance;
   distance.direction = direction;
 
   double seconds = 0;
-  DistanceSet distances =
-      measure_distances(std::move(sampled.samples), indexed.reference, distance, &seconds);
+  DistanceSet distances = measure_distances(std::move(sampled.samples), search, distance, &seconds);
   if (hooks.measured) hooks.measured(distances, seconds);
   return distances;
 }

@@ -34,6 +34,7 @@ class SearchIndex {
   // `reference` must outlive this.
   explicit SearchIndex(const IndexedReference& reference);
 
+  const IndexedReference& reference() const { return *reference_; }
   const ReferenceSurface& surface() const { return *reference_->surface; }
   MeshCorners triangles() const { return reference_->surface->corners(); }
   const BackgroundGrid& grid() const { return reference_->grid; }
