@@ -40,13 +40,15 @@ namespace {
 // buffer's first touch makes the kernel clear every page it faults in (13-16 % of a
 // two-sided run's CPU), and a run frees buffers of one phase just before the next phase
 // asks for buffers of about their size (the reverse search's boxes before the statistics'
-// patches, the read file before the samples). A buffer that fits none of them releases
-// them all before it maps fresh pages, so the process never holds more than it held before
-// the buffers now cached were freed: the peak is no higher than without the cache.
+// patches, the read file before the samples). A buffer that fits none of them is made of
+// them, their pages moved in one after the other (fill), and fresh pages only for the rest;
+// the blocks that no longer fit are released. Either way the process never holds more than
+// it held before the buffers now cached were freed: the peak is no higher than without the
+// cache.
 class FreedBlocks {
  public:
   // The smallest kept block of at least `bytes`, its tail beyond them released; null when
-  // none is that large, every block released.
+  // none is that large.
   void* take(std::size_t bytes) {
     std::lock_guard lock(mutex_);
     auto best = blocks_.end();
@@ -55,15 +57,34 @@ class FreedBlocks {
         best = block;
       }
     }
-    if (best == blocks_.end()) {
-      for (const Block& block : blocks_) munmap(block.start, block.bytes);
-      blocks_.clear();
-      return nullptr;
-    }
+    if (best == blocks_.end()) return nullptr;
     const Block block = *best;
     blocks_.erase(best);
     if (block.bytes > bytes) munmap(static_cast<char*>(block.start) + bytes, block.bytes - bytes);
     return block.start;
+  }
+
+  // Moves kept blocks, the largest first, into the fresh range [start, start + bytes) one
+  // after the other (their pages with them: mremap moves the page tables, huge pages whole,
+  // and copies nothing), so that only what they cannot fill is faulted in fresh; the blocks
+  // that no longer fit are released. The process holds no more than before: every kept page
+  // is moved or released. A block mremap cannot move is released, its part of the range
+  // left fresh.
+  void fill(char* start, std::size_t bytes) noexcept {
+    std::lock_guard lock(mutex_);
+    std::sort(blocks_.begin(), blocks_.end(),
+              [](const Block& a, const Block& b) { return a.bytes > b.bytes; });
+    std::size_t filled = 0;
+    for (const Block& block : blocks_) {
+      if (filled + block.bytes <= bytes &&
+          mremap(block.start, block.bytes, block.bytes, MREMAP_MAYMOVE | MREMAP_FIXED,
+                 start + filled) != MAP_FAILED) {
+        filled += block.bytes;
+      } else {
+        munmap(block.start, block.bytes);
+      }
+    }
+    blocks_.clear();
   }
 
   // Unmaps the largest kept blocks until the others hold at most `bytes`.
@@ -125,7 +146,9 @@ void* map_fresh(std::size_t bytes) {
 void* allocate_huge(std::size_t bytes) {
   const std::size_t rounded = rounded_size(bytes);
   if (void* reused = freed_blocks().take(rounded)) return reused;
-  return map_fresh(rounded);
+  void* fresh = map_fresh(rounded);
+  freed_blocks().fill(static_cast<char*>(fresh), rounded);
+  return fresh;
 }
 
 void free_huge(void* p, std::size_t bytes) noexcept {

@@ -39,9 +39,10 @@ TEST_CASE("large buffers start at a huge-page boundary and hold what is written"
 
 #if defined(__linux__) && !defined(__SANITIZE_ADDRESS__)
 TEST_CASE("a freed large buffer is reused by the next one it can hold", "[buffer]") {
-  // A buffer larger than any kept one releases them all (it fits none), so that what follows
-  // sees only the blocks it frees itself, whatever ran before. Its pages are never touched.
+  // A buffer larger than any kept one takes them all (it fits none), so that what follows
+  // sees only the blocks it frees itself, whatever ran before; released at once.
   { const Buffer<char> larger_than_any(std::size_t{1} << 30); }
+  release_kept_buffers(0);
   std::uintptr_t freed = 0;
   {
     Buffer<std::uint32_t> first(24 * kMiB / 4);
@@ -60,8 +61,25 @@ bool mapped(std::uintptr_t at) {
   return mincore(reinterpret_cast<void*>(at), 4096, &resident) == 0;
 }
 
+TEST_CASE("a buffer that fits no kept one is made of them, the largest first", "[buffer]") {
+  release_kept_buffers(0);
+  {
+    Buffer<std::uint32_t> a(6 * kMiB / 4);
+    std::fill(a.begin(), a.end(), 0xaaaau);
+    Buffer<std::uint32_t> b(10 * kMiB / 4);
+    std::fill(b.begin(), b.end(), 0xbbbbu);
+  }
+  // 24 MiB: b's pages first, then a's, then fresh (zero) ones; none of them copied.
+  const Buffer<std::uint32_t> c(24 * kMiB / 4);
+  const std::size_t a_begin = 10 * kMiB / 4, fresh_begin = 16 * kMiB / 4;
+  CHECK(std::all_of(c.begin(), c.begin() + a_begin, [](std::uint32_t w) { return w == 0xbbbbu; }));
+  CHECK(std::all_of(c.begin() + a_begin, c.begin() + fresh_begin,
+                    [](std::uint32_t w) { return w == 0xaaaau; }));
+  CHECK(std::all_of(c.begin() + fresh_begin, c.end(), [](std::uint32_t w) { return w == 0; }));
+}
+
 TEST_CASE("releasing the kept buffers keeps the smallest within the budget", "[buffer]") {
-  { const Buffer<char> larger_than_any(std::size_t{1} << 30); }
+  release_kept_buffers(0);
   std::uintptr_t small = 0, large = 0;
   {
     Buffer<std::uint32_t> a(8 * kMiB / 4);
