@@ -72,8 +72,8 @@ template <class T>
 using Buffer = std::vector<T, UninitializedAllocator<T>>;
 
 // Unmaps the largest of the freed buffers kept so far until the others hold at most
-// keep_bytes. A buffer asking for fresh pages takes or releases them all itself; this is for a program
-// whose large buffers are made, so that the kept ones do not stay resident under the
+// keep_bytes. A buffer asking for fresh pages takes or releases them all itself; this is for a
+// program whose large buffers are made, so that the kept ones do not stay resident under the
 // allocations that follow, bar a few for the small buffers still to come.
 void release_kept_buffers(std::size_t keep_bytes) noexcept;
 
