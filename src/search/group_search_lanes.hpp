@@ -125,6 +125,71 @@ void update_group_bound(Group<kLanes>& g) {
   g.limit = box_filter_limit(std::sqrt(most), g.scale);
 }
 
+// Whether any lane of vector v has its bound reaching the box [lo, hi] (each lane's squared
+// gap to it in doubles: a few ulps of the coordinate scale, far inside the bounds' margin).
+template <int kLanes>
+[[gnu::always_inline]] inline bool reaches(const Group<kLanes>& g, const PointLanes<kLanes>& p,
+                                           int v, const double* lo, const double* hi) {
+  using G = Group<kLanes>;
+  using Real = typename G::Real;
+  const Real zero = Real{};
+  const Real* axes[3] = {&p.x, &p.y, &p.z};
+  Real gap_sq = zero;
+  for (int axis = 0; axis < 3; ++axis) {
+    const Real below = lo[axis] - *axes[axis];
+    const Real above = *axes[axis] - hi[axis];
+    Real gap = below > above ? below : above;
+    gap = gap > zero ? gap : zero;
+    gap_sq += gap * gap;
+  }
+  return any_lane<kLanes>(gap_sq <= G::real(g.bound_sq, v));
+}
+
+// Vector v's lanes take the kernel's result r for triangle `index` where it is better (the
+// lesser squared distance, the lower index among ties); true when a lane did.
+template <int kLanes>
+[[gnu::always_inline]] inline bool take(Group<kLanes>& g, int v,
+                                        const TrianglePointLanes<kLanes>& r,
+                                        typename Group<kLanes>::Real index) {
+  using G = Group<kLanes>;
+  using Real = typename G::Real;
+  using Mask = typename G::Mask;
+  const Real best_sq = G::real(g.best_sq, v);
+  const Real best_t = G::real(g.best_t, v);
+  const Mask better = (r.squared < best_sq) | ((r.squared == best_sq) & (index < best_t));
+  if (!any_lane<kLanes>(better)) return false;
+  const Real new_sq = better ? r.squared : best_sq;
+  G::store(g.best_sq, v, new_sq);
+  G::store(g.best_t, v, better ? index : best_t);
+  G::store(g.best_x, v, better ? r.x : G::real(g.best_x, v));
+  G::store(g.best_y, v, better ? r.y : G::real(g.best_y, v));
+  G::store(g.best_z, v, better ? r.z : G::real(g.best_z, v));
+  G::store(g.best_f, v, better ? r.feature : G::mask(g.best_f, v));
+  const Real bound = lane_sqrt<kLanes>(new_sq) + g.margin;
+  G::store(g.bound_sq, v, bound * bound);
+  return true;
+}
+
+struct MeasuredTriangle {
+  LaneTriangle corners;
+  double lo[3], hi[3];  // its box
+};
+
+[[gnu::always_inline]] inline MeasuredTriangle measured_triangle(const TriangleCorners& corners) {
+  MeasuredTriangle m{lane_triangle(corners), {}, {}};
+  for (int axis = 0; axis < 3; ++axis) {
+    m.lo[axis] = std::min(std::min(m.corners.a[axis], m.corners.b[axis]), m.corners.c[axis]);
+    m.hi[axis] = std::max(std::max(m.corners.a[axis], m.corners.b[axis]), m.corners.c[axis]);
+  }
+  return m;
+}
+
+template <int kLanes>
+[[gnu::always_inline]] inline void count_tests(const Group<kLanes>& g, int v,
+                                               SearchCounters& counters) {
+  counters.triangles_tested += static_cast<std::uint64_t>(std::min(kLanes, g.queries - v * kLanes));
+}
+
 // Measures triangle t against every vector of the group with a lane whose bound reaches the
 // triangle's box (every vector when `all`); true when a lane improved.
 template <int kLanes>
@@ -132,49 +197,48 @@ bool measure(Group<kLanes>& g, const TriangleCorners& corners, std::uint32_t t, 
              SearchCounters& counters) {
   using G = Group<kLanes>;
   using Real = typename G::Real;
-  using Mask = typename G::Mask;
-  const LaneTriangle triangle = lane_triangle(corners);
-  double box_lo[3], box_hi[3];
-  for (int axis = 0; axis < 3; ++axis) {
-    box_lo[axis] = std::min(std::min(triangle.a[axis], triangle.b[axis]), triangle.c[axis]);
-    box_hi[axis] = std::max(std::max(triangle.a[axis], triangle.b[axis]), triangle.c[axis]);
-  }
+  const MeasuredTriangle m = measured_triangle(corners);
   const Real index = Real{} + static_cast<double>(t);
-  const Real zero = Real{};
   bool improved = false;
   for (int v = 0; v < g.vectors; ++v) {
     const PointLanes<kLanes> p{G::real(g.x, v), G::real(g.y, v), G::real(g.z, v)};
-    if (!all) {
-      // Each lane's squared gap to the triangle's box, in doubles (a few ulps of the
-      // coordinate scale, far inside the margin the bounds carry).
-      const Real* axes[3] = {&p.x, &p.y, &p.z};
-      Real gap_sq = zero;
-      for (int axis = 0; axis < 3; ++axis) {
-        const Real below = box_lo[axis] - *axes[axis];
-        const Real above = *axes[axis] - box_hi[axis];
-        Real gap = below > above ? below : above;
-        gap = gap > zero ? gap : zero;
-        gap_sq += gap * gap;
-      }
-      if (!any_lane<kLanes>(gap_sq <= G::real(g.bound_sq, v))) continue;
+    if (!all && !reaches(g, p, v, m.lo, m.hi)) continue;
+    count_tests(g, v, counters);
+    improved |= take(g, v, closest_point_on_triangle_lanes<kLanes>(p, m.corners), index);
+  }
+  return improved;
+}
+
+// Two triangles measured as measure() measures each, both kernels of a vector computed
+// before either result is taken: two independent chains of work the core overlaps. The
+// bests are the least (squared distance, index) pairs in any order; the second triangle's
+// boxes are checked against the bounds before the first's results, which only tests more.
+template <int kLanes>
+bool measure_pair(Group<kLanes>& g, const TriangleCorners& c0, std::uint32_t t0,
+                  const TriangleCorners& c1, std::uint32_t t1, SearchCounters& counters) {
+  using G = Group<kLanes>;
+  using Real = typename G::Real;
+  const MeasuredTriangle m0 = measured_triangle(c0), m1 = measured_triangle(c1);
+  const Real index0 = Real{} + static_cast<double>(t0);
+  const Real index1 = Real{} + static_cast<double>(t1);
+  bool improved = false;
+  for (int v = 0; v < g.vectors; ++v) {
+    const PointLanes<kLanes> p{G::real(g.x, v), G::real(g.y, v), G::real(g.z, v)};
+    const bool first = reaches(g, p, v, m0.lo, m0.hi);
+    const bool second = reaches(g, p, v, m1.lo, m1.hi);
+    if (first && second) {
+      count_tests(g, v, counters);
+      count_tests(g, v, counters);
+      const TrianglePointLanes<kLanes> r0 = closest_point_on_triangle_lanes<kLanes>(p, m0.corners);
+      const TrianglePointLanes<kLanes> r1 = closest_point_on_triangle_lanes<kLanes>(p, m1.corners);
+      improved |= take(g, v, r0, index0);
+      improved |= take(g, v, r1, index1);
+    } else if (first || second) {
+      count_tests(g, v, counters);
+      improved |= first
+                      ? take(g, v, closest_point_on_triangle_lanes<kLanes>(p, m0.corners), index0)
+                      : take(g, v, closest_point_on_triangle_lanes<kLanes>(p, m1.corners), index1);
     }
-    counters.triangles_tested +=
-        static_cast<std::uint64_t>(std::min(kLanes, g.queries - v * kLanes));
-    const TrianglePointLanes<kLanes> r = closest_point_on_triangle_lanes<kLanes>(p, triangle);
-    const Real best_sq = G::real(g.best_sq, v);
-    const Real best_t = G::real(g.best_t, v);
-    const Mask better = (r.squared < best_sq) | ((r.squared == best_sq) & (index < best_t));
-    if (!any_lane<kLanes>(better)) continue;
-    const Real new_sq = better ? r.squared : best_sq;
-    G::store(g.best_sq, v, new_sq);
-    G::store(g.best_t, v, better ? index : best_t);
-    G::store(g.best_x, v, better ? r.x : G::real(g.best_x, v));
-    G::store(g.best_y, v, better ? r.y : G::real(g.best_y, v));
-    G::store(g.best_z, v, better ? r.z : G::real(g.best_z, v));
-    G::store(g.best_f, v, better ? r.feature : G::mask(g.best_f, v));
-    const Real bound = lane_sqrt<kLanes>(new_sq) + g.margin;
-    G::store(g.bound_sq, v, bound * bound);
-    improved = true;
   }
   return improved;
 }
@@ -283,24 +347,38 @@ bool covers_grid(const GroupLevel& level, const Group<kLanes>& g) {
   return true;
 }
 
-// Measures the candidates gathered since `from`, the one with the nearest box first (its
-// triangle is the likeliest to lower the bounds the others are checked against).
+// Measures the candidates gathered since `from`: the one with the nearest box first, alone
+// (its triangle is the likeliest to lower the bounds the others are checked against), then
+// the others two at a time (measure_pair), each checked against the group's limit first.
 template <int kLanes>
 void measure_candidates(GroupSearcher::State& s, Group<kLanes>& g, std::size_t from,
                         SearchCounters& counters) {
   GroupCandidate* found = s.candidates.data() + from;
   const std::size_t count = s.candidates.size() - from;
+  if (count == 0) return;
   std::size_t nearest = 0;
   for (std::size_t k = 0; k < count; ++k) {
     if (found[k].squared < found[nearest].squared) nearest = k;
   }
   if (nearest != 0) std::swap(found[0], found[nearest]);
-  for (std::size_t k = 0; k < count; ++k) {
+  const auto alone = [&](const GroupCandidate& c) {
+    if (measure(g, s.triangles[c.triangle], c.triangle, false, counters)) update_group_bound(g);
+  };
+  if (found[0].squared <= g.limit) alone(found[0]);
+  const GroupCandidate* waiting = nullptr;  // a candidate in, without its partner yet
+  for (std::size_t k = 1; k < count; ++k) {
     if (found[k].squared > g.limit) continue;
-    if (measure(g, s.triangles[found[k].triangle], found[k].triangle, false, counters)) {
+    if (!waiting) {
+      waiting = &found[k];
+      continue;
+    }
+    if (measure_pair(g, s.triangles[waiting->triangle], waiting->triangle,
+                     s.triangles[found[k].triangle], found[k].triangle, counters)) {
       update_group_bound(g);
     }
+    waiting = nullptr;
   }
+  if (waiting && waiting->squared <= g.limit) alone(*waiting);
 }
 
 template <int kLanes>
