@@ -7,6 +7,8 @@
 
 #include "geometry/linear_patch.hpp"
 #include "sampling/lattice_triangles.hpp"
+#include "util/block_offsets.hpp"
+#include "util/buffer.hpp"
 #include "util/disjoint_sets.hpp"
 
 namespace ncv {
@@ -56,11 +58,17 @@ class RegionBuilder {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, d.size(), kBlock), [&](const auto& r) {
       for (std::size_t s = r.begin(); s != r.end(); ++s) kind_[s] = kind_code(d[s], zone);
     });
-    for (std::uint64_t s = 0; s < d.size(); ++s) {
-      if (kind_[s] == kWithin) continue;
-      member_[s] = static_cast<std::uint32_t>(members_.size());
-      members_.push_back(s);
-    }
+    // Numbered in sample order, block by block in parallel (a serial pass over every sample
+    // was a fifth of the regions' time on a finished part). Only out-of-tolerance samples'
+    // numbers are ever read.
+    const auto out = [&](std::size_t s) { return kind_[s] != kWithin ? 1u : 0u; };
+    const std::vector<std::uint32_t> starts = block_starts<std::uint32_t>(d.size(), out);
+    members_.resize(starts.back());
+    for_each_offset(d.size(), out, starts, [&](std::size_t s, std::uint32_t at) {
+      if (!out(s)) return;
+      member_[s] = at;
+      members_[at] = s;
+    });
     sets_ = DisjointSets(members_.size());
     find_touched_triangles();
   }
@@ -161,9 +169,12 @@ class RegionBuilder {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles, kBlock), [&](const auto& r) {
       for (std::size_t t = r.begin(); t != r.end(); ++t) touched_flag_[t] = touched(t);
     });
-    for (std::size_t t = 0; t < triangles; ++t) {
-      if (touched_flag_[t]) touched_.push_back(static_cast<std::uint32_t>(t));
-    }
+    const auto flagged = [&](std::size_t t) { return touched_flag_[t] != 0 ? 1u : 0u; };
+    const std::vector<std::uint32_t> starts = block_starts<std::uint32_t>(triangles, flagged);
+    touched_.resize(starts.back());
+    for_each_offset(triangles, flagged, starts, [&](std::size_t t, std::uint32_t at) {
+      if (flagged(t)) touched_[at] = static_cast<std::uint32_t>(t);
+    });
   }
 
   std::uint8_t touched(std::size_t t) const {
@@ -253,8 +264,8 @@ class RegionBuilder {
   std::span<const double> d_;
   Tolerance zone_;
   std::vector<KindCode> kind_;               // per sample
-  std::vector<std::uint32_t> member_;        // per out-of-tolerance sample: its number
-  std::vector<std::uint64_t> members_;       // the out-of-tolerance samples, ascending
+  Buffer<std::uint32_t> member_;             // per out-of-tolerance sample: its number
+  Buffer<std::uint64_t> members_;            // the out-of-tolerance samples, ascending
   DisjointSets sets_{0};                     // over members_
   std::vector<std::uint8_t> touched_flag_;   // per triangle
   std::vector<std::uint32_t> touched_;       // triangles with an out-of-tolerance sample
