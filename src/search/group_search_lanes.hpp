@@ -234,10 +234,10 @@ bool measure_pair(Group<kLanes>& g, const TriangleCorners& c0, std::uint32_t t0,
       improved |= take(g, v, r0, index0);
       improved |= take(g, v, r1, index1);
     } else if (first || second) {
+      const MeasuredTriangle& m = first ? m0 : m1;
       count_tests(g, v, counters);
-      improved |= first
-                      ? take(g, v, closest_point_on_triangle_lanes<kLanes>(p, m0.corners), index0)
-                      : take(g, v, closest_point_on_triangle_lanes<kLanes>(p, m1.corners), index1);
+      improved |= take(g, v, closest_point_on_triangle_lanes<kLanes>(p, m.corners),
+                       first ? index0 : index1);
     }
   }
   return improved;

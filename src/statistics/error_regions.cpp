@@ -8,7 +8,6 @@
 #include "geometry/linear_patch.hpp"
 #include "sampling/lattice_triangles.hpp"
 #include "util/block_offsets.hpp"
-#include "util/buffer.hpp"
 #include "util/disjoint_sets.hpp"
 
 namespace ncv {
@@ -61,14 +60,10 @@ class RegionBuilder {
     // Numbered in sample order, block by block in parallel (a serial pass over every sample
     // was a fifth of the regions' time on a finished part). Only out-of-tolerance samples'
     // numbers are ever read.
-    const auto out = [&](std::size_t s) { return kind_[s] != kWithin ? 1u : 0u; };
-    const std::vector<std::uint32_t> starts = block_starts<std::uint32_t>(d.size(), out);
-    members_.resize(starts.back());
-    for_each_offset(d.size(), out, starts, [&](std::size_t s, std::uint32_t at) {
-      if (!out(s)) return;
-      member_[s] = at;
-      members_[at] = s;
-    });
+    members_ =
+        kept_indices<std::uint64_t>(d.size(), [&](std::size_t s) { return kind_[s] != kWithin; });
+    tbb::parallel_for(std::size_t{0}, members_.size(),
+                      [&](std::size_t k) { member_[members_[k]] = static_cast<std::uint32_t>(k); });
     sets_ = DisjointSets(members_.size());
     find_touched_triangles();
   }
@@ -169,12 +164,8 @@ class RegionBuilder {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles, kBlock), [&](const auto& r) {
       for (std::size_t t = r.begin(); t != r.end(); ++t) touched_flag_[t] = touched(t);
     });
-    const auto flagged = [&](std::size_t t) { return touched_flag_[t] != 0 ? 1u : 0u; };
-    const std::vector<std::uint32_t> starts = block_starts<std::uint32_t>(triangles, flagged);
-    touched_.resize(starts.back());
-    for_each_offset(triangles, flagged, starts, [&](std::size_t t, std::uint32_t at) {
-      if (flagged(t)) touched_[at] = static_cast<std::uint32_t>(t);
-    });
+    touched_ = kept_indices<std::uint32_t>(triangles,
+                                           [&](std::size_t t) { return touched_flag_[t] != 0; });
   }
 
   std::uint8_t touched(std::size_t t) const {
@@ -268,7 +259,7 @@ class RegionBuilder {
   Buffer<std::uint64_t> members_;            // the out-of-tolerance samples, ascending
   DisjointSets sets_{0};                     // over members_
   std::vector<std::uint8_t> touched_flag_;   // per triangle
-  std::vector<std::uint32_t> touched_;       // triangles with an out-of-tolerance sample
+  Buffer<std::uint32_t> touched_;            // triangles with an out-of-tolerance sample
   std::vector<std::size_t> region_of_root_;  // per member: its region when it is a root
   std::vector<std::size_t> order_;           // regions in reported order (largest first)
 };

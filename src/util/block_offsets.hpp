@@ -60,4 +60,17 @@ Buffer<Offset> block_offsets(std::size_t n, Count&& count, Offset start = 0) {
   return offsets;
 }
 
+// The items i < n with keep(i), ascending: each one's place among them from block_starts, the
+// blocks written in parallel.
+template <class Index, class Keep>
+Buffer<Index> kept_indices(std::size_t n, Keep&& keep) {
+  const auto count = [&](std::size_t i) { return keep(i) ? 1u : 0u; };
+  const std::vector<Index> starts = block_starts<Index>(n, count);
+  Buffer<Index> kept(starts.back());  // every element written below
+  for_each_offset(n, count, starts, [&](std::size_t i, Index at) {
+    if (keep(i)) kept[at] = static_cast<Index>(i);
+  });
+  return kept;
+}
+
 }  // namespace ncv
