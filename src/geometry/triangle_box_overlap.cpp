@@ -12,35 +12,26 @@ bool separated(double p0, double p1, double p2, double radius) {
 }
 
 // The nine axes edge x box-axis: a triangle and a box whose projections are disjoint on one
-// of them do not meet even when all face axes overlap. The axis x × e is (0, -e_z, e_y), and
-// its kin alike; the projections and radii leave out the products by its zero component.
-// Coordinates are finite (at most kMaxCoordinate), so such a product is a zero, which
-// changes no sum it enters but for the sign of a zero result: each projection and radius
-// has the bits of the dot products with the full cross products (a zero's sign does not
-// count in a comparison), so the answers and the grids' cell lists are the same (a unit
-// test holds it to the full form on cases within rounding of the boundary), for a third of
-// the arithmetic. This test was 20-40 ms of the 1.25 M-triangle workpieces' grid build on
-// 2 threads; the build is about 5 % faster (docs/PERFORMANCE.md).
+// of them do not meet even when all face axes overlap. Box axis k crossed with an edge e has
+// -e_j at component i and e_i at component j (i, j the next two axes after k) and a zero at
+// k; the projections and radii leave out the products by that zero. Coordinates are finite
+// (at most kMaxCoordinate), so such a product is a zero, which changes no sum it enters but
+// for the sign of a zero result: each projection and radius has the bits of the dot products
+// with the full cross products (a zero's sign does not count in a comparison), so the
+// answers and the grids' cell lists are the same (a unit test holds it to the full form on
+// cases within rounding of the boundary), for a third of the arithmetic. This test was
+// 20-40 ms of the 1.25 M-triangle workpieces' grid build on 2 threads; the build is about
+// 5 % faster (docs/PERFORMANCE.md).
 bool separated_on_edge_axes(Vec3 half, Vec3 v0, Vec3 v1, Vec3 v2) {
   const Vec3 edges[3] = {v1 - v0, v2 - v1, v0 - v2};
   for (const Vec3& e : edges) {
-    // x × e = (0, -e_z, e_y)
-    if (separated(v0[2] * e[1] - v0[1] * e[2], v1[2] * e[1] - v1[1] * e[2],
-                  v2[2] * e[1] - v2[1] * e[2],
-                  half[1] * std::fabs(e[2]) + half[2] * std::fabs(e[1]))) {
-      return true;
-    }
-    // y × e = (e_z, 0, -e_x)
-    if (separated(v0[0] * e[2] - v0[2] * e[0], v1[0] * e[2] - v1[2] * e[0],
-                  v2[0] * e[2] - v2[2] * e[0],
-                  half[0] * std::fabs(e[2]) + half[2] * std::fabs(e[0]))) {
-      return true;
-    }
-    // z × e = (-e_y, e_x, 0)
-    if (separated(v0[1] * e[0] - v0[0] * e[1], v1[1] * e[0] - v1[0] * e[1],
-                  v2[1] * e[0] - v2[0] * e[1],
-                  half[0] * std::fabs(e[1]) + half[1] * std::fabs(e[0]))) {
-      return true;
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      const auto project = [&](const Vec3& v) { return v[j] * e[i] - v[i] * e[j]; };
+      if (separated(project(v0), project(v1), project(v2),
+                    half[i] * std::fabs(e[j]) + half[j] * std::fabs(e[i]))) {
+        return true;
+      }
     }
   }
   return false;

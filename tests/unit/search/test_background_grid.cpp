@@ -137,10 +137,10 @@ bool full_cross_sat(Vec3 centre, Vec3 half, Vec3 a, Vec3 b, Vec3 c, bool edge_ax
 }
 
 TEST_CASE("triangle-box overlap is the full separating-axis test to the last bit", "[grid]") {
-  // Triangles whose edge-axis projections land within rounding of the box's radius: a box
-  // corner at the origin's cell corner, triangles through points a few ulps either side of
-  // it, coordinates of every scale, and edges along the axes (zero components, whose
-  // products the fast form leaves out).
+  // Triangles whose edge-axis projections land within rounding of the box's radius: an edge
+  // through a point a few ulps either side of a box corner, at every scale, some edges in a
+  // coordinate plane or along an axis (zero components, whose products the fast form leaves
+  // out).
   std::mt19937_64 rng(23);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::uniform_int_distribution<int> ulps(-4, 4), exponent(-30, 30), pick(0, 5);
@@ -161,7 +161,10 @@ TEST_CASE("triangle-box overlap is the full separating-axis test to the last bit
     }
     Vec3 direction{unit(rng), unit(rng), unit(rng)};
     if (pick(rng) == 0) direction[pick(rng) % 3] = 0;  // an edge in a coordinate plane
-    if (pick(rng) == 0) direction = Vec3{0, 0, 0}, direction[pick(rng) % 3] = 1;  // along an axis
+    if (pick(rng) == 0) {                              // along an axis
+      direction = Vec3{0, 0, 0};
+      direction[pick(rng) % 3] = 1;
+    }
     const Vec3 a = corner - scale * direction;
     const Vec3 b = corner + scale * direction;
     const Vec3 c = a + scale * Vec3{unit(rng), unit(rng), unit(rng)};
