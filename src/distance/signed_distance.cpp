@@ -55,11 +55,18 @@ class SignedDistanceJob {
  public:
   SignedDistanceJob(const ReferenceSurface& nominal, const SearchIndex* grid,
                     std::span<const Vec3> points, std::span<const Vec3> normals,
-                    const SideRule& side)
-      : nominal_(nominal), grid_(grid), points_(points), normals_(normals), side_(side) {}
+                    const SideRule& side, std::span<const std::uint32_t> order)
+      : nominal_(nominal),
+        grid_(grid),
+        points_(points),
+        normals_(normals),
+        side_(side),
+        order_(order),
+        head_(points.size() - order.size()) {}
 
-  // Points begin..end, begin at a block's start; every block starts its search afresh. A
-  // block holding an unusable point is not measured (first_unusable() names the lowest).
+  // The points at places begin..end of the measuring order, begin at a block's start; every
+  // block starts its search afresh. A block holding an unusable point is not measured
+  // (first_unusable() names the lowest).
   void run(DistanceField& field, std::size_t begin, std::size_t end) {
     Worker& worker = workers_.local();
     for (std::size_t block = begin; block < end; block += kDistanceBlockSize) {
@@ -92,23 +99,26 @@ class SignedDistanceJob {
   }
 
  private:
-  // The block's points in the surface's frame, into worker.local; false (and the first
-  // unusable point noted) when one is unusable, checked in the same pass as the points are
-  // read (a pass of its own read the 30 MB of a paper-scale job's points again).
+  // The number of the point at place k of the measuring order.
+  std::size_t point_at(std::size_t k) const { return k < head_ ? k : order_[k - head_]; }
+
+  // The block's points in the surface's frame, into worker.local; false (and its unusable
+  // points noted) when one is unusable, checked in the same pass as the points are read (a
+  // pass of its own read the 30 MB of a paper-scale job's points again).
   bool to_local(std::size_t block, std::size_t count, Worker& worker) {
     bool all = true;
     for (std::size_t k = 0; k < count; ++k) {
-      const Vec3 p = points_[block + k];
+      const Vec3 p = points_[point_at(block + k)];
       all &= usable(p);
       worker.local[k] = nominal_.to_local(p);
     }
     if (all) return true;
     for (std::size_t k = 0; k < count; ++k) {
-      if (usable(points_[block + k])) continue;
+      const std::size_t i = point_at(block + k);
+      if (usable(points_[i])) continue;
       std::size_t first = first_unusable_.load();
-      while (block + k < first && !first_unusable_.compare_exchange_weak(first, block + k)) {
+      while (i < first && !first_unusable_.compare_exchange_weak(first, i)) {
       }
-      break;
     }
     return false;
   }
@@ -135,7 +145,9 @@ class SignedDistanceJob {
       k += worker.groups->closest({queries.data() + k, count - k}, {hits.data() + k, count - k},
                                   worker.counters);
     }
-    for (std::size_t k = 0; k < count; ++k) store(field, block + order[k], queries[k], hits[k]);
+    for (std::size_t k = 0; k < count; ++k) {
+      store(field, point_at(block + order[k]), queries[k], hits[k]);
+    }
   }
 
   // A block of points in their order, each from its predecessor's closest triangle (over the
@@ -145,7 +157,7 @@ class SignedDistanceJob {
     if (worker.single) worker.single->forget();
     for (std::size_t k = 0; k < count; ++k) {
       const Vec3 p = worker.local[k];
-      store(field, block + k, p,
+      store(field, point_at(block + k), p,
             worker.single ? worker.single->closest(p, worker.counters)
                           : brute_force_closest(nominal_.corners(), p, worker.counters));
     }
@@ -162,6 +174,8 @@ class SignedDistanceJob {
   std::span<const Vec3> points_;
   std::span<const Vec3> normals_;
   const SideRule& side_;
+  std::span<const std::uint32_t> order_;  // the points after the first head_, in their order
+  std::size_t head_;                      // points measured in their own order first
   tbb::enumerable_thread_specific<Worker> workers_;
   std::atomic<std::size_t> first_unusable_{std::numeric_limits<std::size_t>::max()};
 };
@@ -177,14 +191,18 @@ namespace {
 DistanceField measure(const ReferenceSurface& nominal, const SearchIndex* grid,
                       std::span<const Vec3> points, std::span<const Vec3> sample_normals,
                       const SideRule& side, SearchStatistics* statistics,
-                      const DistanceProgress& progress) {
+                      const DistanceProgress& progress, std::span<const std::uint32_t> order) {
   check_normals(points, sample_normals, side.method());
+  if (order.size() > points.size()) {
+    throw UsageError(
+        fmt::format("a measuring order of {} places for {} points", order.size(), points.size()));
+  }
   const std::size_t n = points.size();
   DistanceField field;
   field.distance.resize(n);
   field.closest_face.resize(n);
 
-  SignedDistanceJob job(nominal, grid, points, sample_normals, side);
+  SignedDistanceJob job(nominal, grid, points, sample_normals, side, order);
   const std::thread::id caller = std::this_thread::get_id();
   std::atomic<std::size_t> done{0};
   const std::size_t blocks = (n + kDistanceBlockSize - 1) / kDistanceBlockSize;
@@ -219,14 +237,16 @@ DistanceField compute_signed_distances(const SearchIndex& index, std::span<const
                                        SearchStatistics* statistics,
                                        const DistanceProgress& progress) {
   const SideRule side(index.surface(), resolve_sign_method(index.surface(), method));
-  return measure(index.surface(), &index, points, sample_normals, side, statistics, progress);
+  return measure(index.surface(), &index, points, sample_normals, side, statistics, progress, {});
 }
 
 DistanceField compute_signed_distances(const SearchIndex& index, std::span<const Vec3> points,
                                        std::span<const Vec3> sample_normals, const SideRule& side,
                                        SearchStatistics* statistics,
-                                       const DistanceProgress& progress) {
-  return measure(index.surface(), &index, points, sample_normals, side, statistics, progress);
+                                       const DistanceProgress& progress,
+                                       std::span<const std::uint32_t> order) {
+  return measure(index.surface(), &index, points, sample_normals, side, statistics, progress,
+                 order);
 }
 
 DistanceField compute_signed_distances(const ReferenceSurface& surface,
@@ -235,7 +255,7 @@ DistanceField compute_signed_distances(const ReferenceSurface& surface,
                                        SearchStatistics* statistics,
                                        const DistanceProgress& progress) {
   const SideRule side(surface, resolve_sign_method(surface, method));
-  return measure(surface, nullptr, points, sample_normals, side, statistics, progress);
+  return measure(surface, nullptr, points, sample_normals, side, statistics, progress, {});
 }
 
 DistanceField compute_signed_distances(const ReferenceSurface& surface,
@@ -243,7 +263,7 @@ DistanceField compute_signed_distances(const ReferenceSurface& surface,
                                        std::span<const Vec3> sample_normals, const SideRule& side,
                                        SearchStatistics* statistics,
                                        const DistanceProgress& progress) {
-  return measure(surface, nullptr, points, sample_normals, side, statistics, progress);
+  return measure(surface, nullptr, points, sample_normals, side, statistics, progress, {});
 }
 
 }  // namespace ncv

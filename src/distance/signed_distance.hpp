@@ -79,11 +79,15 @@ DistanceField compute_signed_distances(const ReferenceSurface& surface,
                                        SearchStatistics* statistics = nullptr,
                                        const DistanceProgress& progress = {});
 // The same two with a side rule made already (a resolved method on the same surface), so
-// that a caller signing more points later (certification) builds its winding tree once.
+// that a caller signing more points later (certification) builds its winding tree once. Over
+// the grid, `order` is the order the last order.size() points are measured in (each of their
+// numbers once; sampling/measuring_order.hpp), after the others in theirs: every value is the
+// same in any order, only the search's counters change.
 DistanceField compute_signed_distances(const SearchIndex& index, std::span<const Vec3> points,
                                        std::span<const Vec3> sample_normals, const SideRule& side,
                                        SearchStatistics* statistics = nullptr,
-                                       const DistanceProgress& progress = {});
+                                       const DistanceProgress& progress = {},
+                                       std::span<const std::uint32_t> order = {});
 DistanceField compute_signed_distances(const ReferenceSurface& surface,
                                        std::span<const Vec3> points,
                                        std::span<const Vec3> sample_normals, const SideRule& side,

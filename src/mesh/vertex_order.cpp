@@ -7,6 +7,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "geometry/morton_cells.hpp"
 #include "util/bucket_positions.hpp"
 #include "util/buffer.hpp"
 #include "util/parallel_over.hpp"
@@ -19,25 +20,6 @@ constexpr std::size_t kSampledTriangles = 4096;
 // order stands.
 constexpr int kBitsPerAxis = 6;
 constexpr std::size_t kSortChunks = 4;
-
-// The low 21 bits of x spread to every third bit.
-std::uint64_t spread_bits(std::uint64_t x) {
-  x &= 0x1FFFFF;
-  x = (x | x << 32) & 0x1F00000000FFFFull;
-  x = (x | x << 16) & 0x1F0000FF0000FFull;
-  x = (x | x << 8) & 0x100F00F00F00F00Full;
-  x = (x | x << 4) & 0x10C30C30C30C30C3ull;
-  x = (x | x << 2) & 0x1249249249249249ull;
-  return x;
-}
-
-// A coordinate's cell among 2^kBitsPerAxis along the box's extent on its axis (0 for a flat
-// axis).
-std::uint64_t cell_of(double x, double low, double extent) {
-  if (!(extent > 0)) return 0;
-  const double scaled = (x - low) / extent * double((1u << kBitsPerAxis) - 1);
-  return static_cast<std::uint64_t>(std::clamp(scaled, 0.0, double((1u << kBitsPerAxis) - 1)));
-}
 
 }  // namespace
 
@@ -60,23 +42,16 @@ bool vertices_scattered(const Mesh& mesh) {
 // sort by the 63-bit code took 26 ms of the read for the 620 k-vertex shuffled finishing part.
 void order_vertices_spatially(Mesh& mesh) {
   const std::size_t vertices = mesh.vertex_count();
-  const BoundingBox box = bounding_box(mesh);
-  const Vec3 extent = box.max - box.min;
+  const MortonCells cells(bounding_box(mesh), kBitsPerAxis);
   Buffer<std::uint32_t> cell(vertices);
-  parallel_over(vertices, 1 << 14, [&](std::size_t v) {
-    std::uint64_t code = 0;
-    for (int axis = 0; axis < 3; ++axis) {
-      code |= spread_bits(cell_of(mesh.vertices[v][axis], box.min[axis], extent[axis])) << axis;
-    }
-    cell[v] = static_cast<std::uint32_t>(code);
-  });
+  parallel_over(vertices, 1 << 14, [&](std::size_t v) { cell[v] = cells.cell(mesh.vertices[v]); });
   const auto chunk_vertices = [&](std::size_t c, auto&& visit) {
     for (std::size_t v = vertices * c / kSortChunks; v < vertices * (c + 1) / kSortChunks; ++v) {
       visit(v);
     }
   };
   BucketPositions<std::uint32_t, kSortChunks> positions(
-      std::size_t{1} << (3 * kBitsPerAxis), [&](std::size_t c, auto&& emit) {
+      cells.count(), [&](std::size_t c, auto&& emit) {
         chunk_vertices(c, [&](std::size_t v) { emit(cell[v]); });
       });
   Buffer<std::uint32_t> renamed(vertices);

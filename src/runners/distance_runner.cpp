@@ -12,6 +12,7 @@
 
 #include "files/grid_file.hpp"
 #include "files/samples_file.hpp"
+#include "sampling/measuring_order.hpp"
 #include "sampling/sample_normals.hpp"
 #include "search/search_index.hpp"
 #include "util/error.hpp"
@@ -164,8 +165,9 @@ DistanceSet measure_distances(SampleSet samples, const SearchIndex& index,
     result.field =
         compute_signed_distances(surface, samples.positions, normals, side, &statistics, report);
   } else {
-    result.field =
-        compute_signed_distances(index, samples.positions, normals, side, &statistics, report);
+    const Buffer<std::uint32_t> order = measuring_order(samples);
+    result.field = compute_signed_distances(index, samples.positions, normals, side, &statistics,
+                                            report, order);
   }
   progress.finish();
   const auto per_query = [&](std::uint64_t count) {

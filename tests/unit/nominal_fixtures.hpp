@@ -2,11 +2,13 @@
 // known geometry, open and mis-oriented variants, and random soups.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
 #include <numbers>
+#include <numeric>
 #include <random>
 #include <set>
 #include <tuple>
@@ -127,6 +129,29 @@ inline Mesh torus(double major, double minor, int nu, int nv) {
     }
   }
   return mesh;
+}
+
+// `mesh` with its triangles shuffled and its vertices numbered by first use, as a weld of a
+// file with its facets in random order numbers them.
+inline Mesh shuffled_facets(const Mesh& mesh, std::uint64_t seed) {
+  std::vector<std::size_t> order(mesh.triangle_count());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::shuffle(order.begin(), order.end(), std::mt19937_64(seed));
+  Mesh out;
+  std::vector<std::uint32_t> renamed(mesh.vertex_count(), ~0u);
+  for (const std::size_t t : order) {
+    Triangle triangle{};
+    for (int k = 0; k < 3; ++k) {
+      std::uint32_t& v = renamed[mesh.triangles[t][k]];
+      if (v == ~0u) {
+        v = static_cast<std::uint32_t>(out.vertices.size());
+        out.vertices.push_back(mesh.vertices[mesh.triangles[t][k]]);
+      }
+      triangle[k] = v;
+    }
+    out.triangles.push_back(triangle);
+  }
+  return out;
 }
 
 // `count` unconnected triangles in [0, 1]^3 with edges up to `size`.

@@ -4,7 +4,9 @@
 // invariance, far-from-origin precision, statistics, progress and input checks.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <bit>
+#include <numeric>
 #include <optional>
 #include <random>
 #include <thread>
@@ -328,6 +330,38 @@ TEST_CASE("results do not depend on the thread count", "[distance]") {
     CHECK(one_stats.cells_visited == two_stats.cells_visited);
     CHECK(one_stats.queries == two_stats.queries);
   }
+}
+
+TEST_CASE("the points measured in another order get the same values", "[distance]") {
+  const ncv::Mesh mesh = fx::torus(3, 1, 80, 40);
+  const ncv::IndexedReference nominal = ncv::index_reference(mesh, "torus");
+  const ncv::SearchIndex index(nominal);
+  const ncv::SideRule side(*nominal.surface, SignMethod::pseudonormal);
+  std::mt19937_64 rng(43);
+  const std::vector<Vec3> points = mixed_points(rng, mesh, 6000);
+  const ncv::DistanceField reference = distances(nominal, false, points, SignMethod::pseudonormal);
+  // The last 5,000 points in random order, after the first 1,000 in theirs, on 1 and 2
+  // threads; then the whole set reversed.
+  std::vector<std::uint32_t> order(5000);
+  std::iota(order.begin(), order.end(), 1000u);
+  std::shuffle(order.begin(), order.end(), rng);
+  for (const int threads : {1, 2}) {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    require_identical(ncv::compute_signed_distances(index, points, {}, side, nullptr, {}, order),
+                      reference);
+  }
+  std::vector<std::uint32_t> reversed(points.size());
+  std::iota(reversed.rbegin(), reversed.rend(), 0u);
+  require_identical(ncv::compute_signed_distances(index, points, {}, side, nullptr, {}, reversed),
+                    reference);
+  // An unusable point is named by its own number whatever its place.
+  std::vector<Vec3> bad = points;
+  bad[4000] = bad[5500] = Vec3{std::nan(""), 0, 0};
+  CHECK_THROWS_WITH(ncv::compute_signed_distances(index, bad, {}, side, nullptr, {}, order),
+                    Catch::Contains("point 4000 "));
+  const std::vector<std::uint32_t> too_long(points.size() + 1, 0);
+  CHECK_THROWS_AS(ncv::compute_signed_distances(index, points, {}, side, nullptr, {}, too_long),
+                  ncv::UsageError);
 }
 
 TEST_CASE("a part far from the origin keeps its precision", "[distance]") {

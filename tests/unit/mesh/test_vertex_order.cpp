@@ -17,29 +17,7 @@
 namespace {
 
 namespace fx = ncv::fixtures;
-
-// `mesh` with its triangles shuffled and its vertices numbered by first use, as a weld of
-// the shuffled facets numbers them.
-ncv::Mesh shuffled(const ncv::Mesh& mesh, std::uint64_t seed) {
-  std::vector<std::size_t> order(mesh.triangle_count());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::shuffle(order.begin(), order.end(), std::mt19937_64(seed));
-  ncv::Mesh out;
-  std::vector<std::uint32_t> renamed(mesh.vertex_count(), ~0u);
-  for (const std::size_t t : order) {
-    ncv::Triangle triangle{};
-    for (int k = 0; k < 3; ++k) {
-      std::uint32_t& v = renamed[mesh.triangles[t][k]];
-      if (v == ~0u) {
-        v = static_cast<std::uint32_t>(out.vertices.size());
-        out.vertices.push_back(mesh.vertices[mesh.triangles[t][k]]);
-      }
-      triangle[k] = v;
-    }
-    out.triangles.push_back(triangle);
-  }
-  return out;
-}
+using fx::shuffled_facets;
 
 }  // namespace
 
@@ -47,12 +25,12 @@ TEST_CASE("only a large mesh numbered out of spatial order counts as scattered",
   const ncv::Mesh torus = fx::torus(40, 10, 400, 200);  // 80,000 vertices
   REQUIRE(torus.vertex_count() >= ncv::kLeastVerticesToOrder);
   CHECK_FALSE(ncv::vertices_scattered(torus));
-  CHECK(ncv::vertices_scattered(shuffled(torus, 1)));
-  CHECK_FALSE(ncv::vertices_scattered(shuffled(fx::torus(40, 10, 60, 30), 1)));  // small
+  CHECK(ncv::vertices_scattered(shuffled_facets(torus, 1)));
+  CHECK_FALSE(ncv::vertices_scattered(shuffled_facets(fx::torus(40, 10, 60, 30), 1)));  // small
 }
 
 TEST_CASE("spatial order renames the vertices and keeps every triangle's corners", "[mesh]") {
-  const ncv::Mesh before = shuffled(fx::torus(40, 10, 400, 200), 7);
+  const ncv::Mesh before = shuffled_facets(fx::torus(40, 10, 400, 200), 7);
   ncv::Mesh after = before;
   ncv::order_vertices_spatially(after);
   REQUIRE(after.vertex_count() == before.vertex_count());
@@ -80,7 +58,7 @@ TEST_CASE("spatial order renames the vertices and keeps every triangle's corners
 
 TEST_CASE("reading a binary STL of shuffled facets numbers its vertices in spatial order",
           "[mesh]") {
-  const ncv::Mesh mesh = shuffled(fx::torus(40, 10, 400, 200), 3);
+  const ncv::Mesh mesh = shuffled_facets(fx::torus(40, 10, 400, 200), 3);
   std::vector<char> bytes(84 + 50 * mesh.triangle_count(), 0);
   const auto count = static_cast<std::uint32_t>(mesh.triangle_count());
   std::memcpy(bytes.data() + 80, &count, 4);
