@@ -10,6 +10,7 @@
 
 #include "statistics/patch_passes.hpp"
 #include "statistics/rank_selection.hpp"
+#include "util/buffer.hpp"
 
 namespace ncv {
 
@@ -18,6 +19,14 @@ namespace {
 // Split points per refinement step: each step leaves at most 1/kSplits of the corner
 // values inside the bracket, so a few steps reach a bracket free of them.
 constexpr std::size_t kSplits = 32;
+
+// A first bracket holds about 1/kSplits of the corner values, each a corner of a few
+// patches (six inside a lattice): its partial patches are reserved at this many a value, so
+// that they are gathered without the buffer growing. Growing doubled it from empty, a fresh
+// block each time, whose pages the host clears (docs/PERFORMANCE.md); a reserve's unwritten
+// pages cost nothing, and a large one takes a freed buffer kept with its pages backed
+// (util/buffer.hpp). Finishing part, 1.8 M samples: 20-163 k patches a bracket, 1.8 a value.
+constexpr std::size_t kPartialPerValue = 4;
 
 // std::lower_bound over the few split points without a branch to mispredict: the patches'
 // corner values fall anywhere among them.
@@ -212,7 +221,7 @@ struct Bracket {
   double a = 0, b = 0;
   double base = 0;
   Quadratic spanning;
-  std::vector<LinearPatch> partial;
+  Buffer<LinearPatch> partial;
 };
 
 void add_to_bracket(Bracket& bracket, const LinearPatch& p) {
@@ -315,7 +324,10 @@ double quantile_in(Bracket bracket, std::span<const double> sorted, double targe
     }
     const double a = j == 0 ? bracket.a : splits[j - 1];
     const double b = j == splits.size() ? bracket.b : splits[j];
-    const std::vector<LinearPatch> partial = std::move(bracket.partial);
+    // The narrower bracket's partial patches are some of these: reserved at their count,
+    // it is filled without growing (each growth a fresh block, docs/PERFORMANCE.md).
+    const Buffer<LinearPatch> partial = std::move(bracket.partial);
+    bracket.partial.reserve(partial.size());
     narrow(bracket, partial, a, b);
   }
 }
@@ -393,9 +405,12 @@ std::vector<double> AreaQuantiles::quantiles(const PatchSource& patches,
   }
   std::sort(opened.begin(), opened.end());
   std::vector<Bracket> brackets(opened.size());
+  const std::size_t reserved =
+      std::min(patches.size(), kPartialPerValue * values_.size() / kSplits);
   for (std::size_t k = 0; k < opened.size(); ++k) {
     brackets[k].a = splits_[opened[k] - 1];
     brackets[k].b = splits_[opened[k]];
+    brackets[k].partial.reserve(reserved);
   }
   narrow_all(brackets, patches, along);
   tbb::parallel_for(std::size_t{0}, fractions.size(), [&](std::size_t f) {

@@ -8,6 +8,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "util/buffer.hpp"
+
 namespace ncv {
 
 namespace {
@@ -74,8 +76,7 @@ RankPlaces place_ranks(const std::vector<std::size_t>& counts, std::span<const s
 // small sets by nth_element, each rank in the part above the one before; larger ones by
 // their digit at `shift`, each wanted digit's values selected in again. Below the last digit
 // the keys agree in every bit: the values are all one.
-void select(std::vector<double>& values, std::span<const std::size_t> ranks, int shift,
-            double* result) {
+void select(Buffer<double>& values, std::span<const std::size_t> ranks, int shift, double* result) {
   if (shift < 0) {
     std::fill_n(result, ranks.size(), values.front());
     return;
@@ -97,7 +98,7 @@ void select(std::vector<double>& values, std::span<const std::size_t> ranks, int
     return;
   }
   const RankPlaces places = place_ranks(counts, ranks);
-  std::vector<std::vector<double>> wanted(places.wanted_bucket.size());
+  std::vector<Buffer<double>> wanted(places.wanted_bucket.size());
   for (std::size_t w = 0; w < wanted.size(); ++w) {
     wanted[w].reserve(counts[places.wanted_bucket[w]]);
   }
@@ -133,11 +134,13 @@ TopCounts count_top_digits(std::span<const double> values) {
 }
 
 // The wanted buckets' values, each plus +0.0, gathered by blocks in parallel, each block
-// writing after the earlier blocks' values of the same bucket.
-std::vector<std::vector<double>> gather_wanted(std::span<const double> values,
-                                               const TopCounts& counts, const RankPlaces& places) {
+// writing after the earlier blocks' values of the same bucket. In Buffers: not zeroed first,
+// and a large one (the finishing part's rounding noise: 7 MB at 1.8 M samples) takes a freed
+// buffer kept with its pages backed rather than fresh pages (util/buffer.hpp).
+std::vector<Buffer<double>> gather_wanted(std::span<const double> values, const TopCounts& counts,
+                                          const RankPlaces& places) {
   const std::size_t wanted = places.wanted_bucket.size();
-  std::vector<std::vector<double>> gathered(wanted);
+  std::vector<Buffer<double>> gathered(wanted);
   std::vector<std::vector<std::size_t>> starts(counts.parts.size(),
                                                std::vector<std::size_t>(wanted));
   for (std::size_t w = 0; w < wanted; ++w) {
@@ -146,7 +149,7 @@ std::vector<std::vector<double>> gather_wanted(std::span<const double> values,
       starts[b][w] = at;
       at += counts.parts[b][places.wanted_bucket[w]];
     }
-    gathered[w].resize(at);
+    gathered[w].resize(at);  // every element written below
   }
   tbb::parallel_for(std::size_t{0}, counts.parts.size(), [&](std::size_t b) {
     std::vector<std::size_t>& next = starts[b];
@@ -166,7 +169,7 @@ std::vector<double> values_at_ranks(std::span<const double> values,
   if (ranks.empty()) return {};
   const TopCounts counts = count_top_digits(values);
   const RankPlaces places = place_ranks(counts.all, ranks);
-  std::vector<std::vector<double>> gathered = gather_wanted(values, counts, places);
+  std::vector<Buffer<double>> gathered = gather_wanted(values, counts, places);
   std::vector<double> result(ranks.size());
   // The wanted buckets selected in side by side.
   tbb::parallel_for(std::size_t{0}, gathered.size(), [&](std::size_t w) {
