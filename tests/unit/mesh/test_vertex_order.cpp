@@ -6,8 +6,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <numeric>
-#include <random>
 #include <vector>
 
 #include "mesh/mesh_reader.hpp"
